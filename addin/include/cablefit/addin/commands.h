@@ -1,0 +1,23 @@
+// Sub-commands of the `cablefit` command line (spec: shared/spec/cli-v1.md). Each Register*
+// adds one sub-command to the app; its callback stores the exit status in `*exit_code`.
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace cablefit::addin {
+
+/// Exit statuses of cli-v1: 0 all done, 1 some inputs failed, 2 usage error / nothing read.
+enum ExitCode { kExitOk = 0, kExitSomeFailed = 1, kExitUsage = 2 };
+
+void RegisterSimulateCommand(CLI::App& app, int* exit_code);
+void RegisterBenchCommand(CLI::App& app, int* exit_code);
+void RegisterDiagnoseCommand(CLI::App& app, int* exit_code);
+void RegisterRelaxCommand(CLI::App& app, int* exit_code);
+void RegisterSectionCommand(CLI::App& app, int* exit_code);
+
+/// Runs the whole command line (what main() does), returning the exit status.
+int RunCommandLine(int argc, char** argv);
+
+}  // namespace cablefit::addin

@@ -1,0 +1,3 @@
+#include "cablefit/addin/commands.h"
+
+int main(int argc, char** argv) { return cablefit::addin::RunCommandLine(argc, argv); }

@@ -1,0 +1,47 @@
+#include "test_support.h"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace cablefit::testing {
+
+std::filesystem::path SourceDir() {
+  if (const char* env = std::getenv("CABLEFIT_SOURCE_DIR")) return env;
+  auto p = std::filesystem::current_path();
+  while (!p.empty() && p != p.root_path()) {
+    if (std::filesystem::exists(p / "core") && std::filesystem::exists(p / "formats")) return p;
+    p = p.parent_path();
+  }
+  return std::filesystem::current_path();
+}
+
+std::filesystem::path SharedDir() {
+  if (const char* env = std::getenv("CABLEFIT_SHARED_DIR")) return env;
+  return SourceDir().parent_path() / "shared";
+}
+
+std::filesystem::path FreshTempDir(const std::string& tag) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = tag;
+  if (info) name += std::string("-") + info->test_suite_name() + "-" + info->name();
+  for (char& c : name)
+    if (c == '/') c = '_';
+  auto dir = std::filesystem::temp_directory_path() / ("cablefit-test-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+::testing::AssertionResult MatricesNear(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
+                                        double tol) {
+  if (a.rows() != b.rows() || a.cols() != b.cols())
+    return ::testing::AssertionFailure() << "shape " << a.rows() << "x" << a.cols() << " vs "
+                                         << b.rows() << "x" << b.cols();
+  const double err = (a - b).cwiseAbs().maxCoeff();
+  if (err <= tol) return ::testing::AssertionSuccess();
+  std::ostringstream os;
+  os << "max abs difference " << err << " > " << tol;
+  return ::testing::AssertionFailure() << os.str();
+}
+
+}  // namespace cablefit::testing

@@ -1,0 +1,34 @@
+// Shared test helpers: data paths, tolerant matrix comparison, expect-throws-with-message.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+
+namespace cablefit::testing {
+
+/// Repository root (CABLEFIT_SOURCE_DIR from CTest, else found from the working directory).
+std::filesystem::path SourceDir();
+/// ../shared next to the repository (public cases, specs).
+std::filesystem::path SharedDir();
+/// A fresh empty temporary directory unique to the running test.
+std::filesystem::path FreshTempDir(const std::string& tag);
+
+::testing::AssertionResult MatricesNear(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
+                                        double tol);
+
+}  // namespace cablefit::testing
+
+/// Expects `stmt` to throw `Exc` whose what() contains `substr`.
+#define EXPECT_THROW_WITH(stmt, Exc, substr)                                               \
+  do {                                                                                     \
+    try {                                                                                  \
+      stmt;                                                                                \
+      ADD_FAILURE() << "expected " #Exc " from " #stmt;                                   \
+    } catch (const Exc& e) {                                                               \
+      EXPECT_NE(std::string(e.what()).find(substr), std::string::npos)                     \
+          << "message: " << e.what();                                                      \
+    }                                                                                      \
+  } while (0)
