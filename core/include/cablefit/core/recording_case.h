@@ -21,6 +21,17 @@ struct ForceTestSpec {
   double max_angle = 0.0;         // [rad] clamped_torsion
 };
 
+/// A recorded quasi-static force curve (recording-v1: `step,displacement,force` for bending or
+/// `step,angle,moment` for torsion), rows in recorded order (loading, then unloading).
+struct ForceCurve {
+  std::string x_name;       // "displacement" [m] or "angle" [rad]
+  std::string y_name;       // "force" [N] or "moment" [N m]
+  std::vector<long> step;   // n, as recorded
+  Eigen::VectorXd x;        // n
+  Eigen::VectorXd y;        // n
+  int size() const { return static_cast<int>(x.size()); }
+};
+
 struct RecordingRef {
   RecordingKind kind = RecordingKind::kScan;
   std::string file;       // as written in case.json (relative to the case file)
