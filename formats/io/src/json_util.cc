@@ -20,7 +20,8 @@ Json ReadJsonFile(const std::string& path) {
   if (!in) throw FileError(path, "cannot open for reading");
   try {
     return Json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for literals such as 1e999 that overflow a double.
     std::string message = e.what();
     // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> drop the tag.
     const auto tag_end = message.find("] ");

@@ -1,0 +1,78 @@
+#include "cablefit/formats/atomic_file.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "cablefit/core/errors.h"
+#include "io_test_files.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+using testing::FreshTempDir;
+using testing::ListDir;
+using testing::ReadText;
+using testing::WriteText;
+
+TEST(AtomicFile, WritesContentsAndCreatesParentFolders) {
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "a" / "b" / "out.txt";
+  WriteFileAtomically(path.string(), [](std::ostream& out) { out << "hello\n" << 42; });
+  EXPECT_EQ(ReadText(path), "hello\n42");
+  EXPECT_EQ(ListDir(path.parent_path()), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, StringOverloadReplacesExistingFile) {
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "out.txt";
+  WriteText(path, "old contents that are longer");
+  WriteFileAtomically(path.string(), std::string("new"));
+  EXPECT_EQ(ReadText(path), "new");
+  EXPECT_EQ(ListDir(dir).size(), 1u);
+}
+
+TEST(AtomicFile, ThrowingWriterLeavesNoFileAndNoTemp) {
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "out.txt";
+  EXPECT_THROW(WriteFileAtomically(path.string(),
+                                   [](std::ostream& out) {
+                                     out << std::string(100000, 'x');  // past any buffer
+                                     throw std::runtime_error("midway");
+                                   }),
+               std::runtime_error);
+  EXPECT_TRUE(ListDir(dir).empty());
+}
+
+TEST(AtomicFile, ThrowingWriterKeepsExistingFileIntact) {
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "out.txt";
+  WriteText(path, "precious");
+  EXPECT_THROW_WITH(WriteFileAtomically(path.string(),
+                                        [](std::ostream& out) {
+                                          out << "partial";
+                                          throw std::logic_error("writer failed");
+                                        }),
+                    std::logic_error, "writer failed");
+  EXPECT_EQ(ReadText(path), "precious");
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, UnwritableLocationIsAFileError) {
+  const auto dir = FreshTempDir("io");
+  WriteText(dir / "plain", "a file, not a folder");
+  EXPECT_THROW_WITH(WriteFileAtomically((dir / "plain" / "out.txt").string(), std::string("x")),
+                    FileError, "plain");
+}
+
+TEST(AtomicFile, TargetThatIsAFolderIsAFileErrorAndLeavesNoTemp) {
+  const auto dir = FreshTempDir("io");
+  std::filesystem::create_directories(dir / "target" / "inside");
+  EXPECT_THROW_WITH(WriteFileAtomically((dir / "target").string(), std::string("x")), FileError,
+                    "cannot replace");
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"target"});
+}
+
+}  // namespace
+}  // namespace cablefit
