@@ -1,0 +1,129 @@
+// Force-curve diagnosis on the public force cases and on bad inputs.
+#include "cablefit/core/force_diagnosis.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "cablefit/core/errors.h"
+#include "cablefit/core/force_rig.h"
+#include "force_test_data.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+TEST(ForceDiagnosis, IdentifiesPublicCases) {
+  const auto cases = testing::LoadPublicForceCases();
+  ASSERT_GE(cases.size(), 3u);
+  for (const auto& c : cases) {
+    const ForceDiagnosis d = DiagnoseForceCurve(c.rod, c.test, c.curve, {}, c.file);
+    std::cout << c.name << ": " << ToString(d.effect) << " (confidence " << d.confidence
+              << ") — " << d.explanation << "\n";
+    for (const auto& cand : d.candidates) {
+      std::cout << "   " << ToString(cand.effect) << " score " << cand.score << " criterion "
+                << cand.criterion << " p " << cand.parameter_count << "\n";
+    }
+    EXPECT_EQ(ToString(d.effect), c.truth_effect) << c.name;
+    EXPECT_GE(d.confidence, 0.5) << c.name;
+    if (c.truth_effect == "stiffness") {
+      ASSERT_TRUE(c.truth_ratio.has_value());
+      EXPECT_NEAR(d.parameters.at("ratio"), *c.truth_ratio, 0.15 * *c.truth_ratio) << c.name;
+    }
+    if (c.truth_effect == "hysteresis") {
+      ASSERT_TRUE(c.truth_loop_area.has_value());
+      std::cout << "   loop_area fitted " << d.parameters.at("loop_area") << " truth "
+                << *c.truth_loop_area << "\n";
+      EXPECT_NEAR(d.parameters.at("loop_area"), *c.truth_loop_area, 0.15 * *c.truth_loop_area);
+    }
+    // The fitted curve explains the data at least as well as the nominal one.
+    EXPECT_LE(d.fitted.rms_deviation, d.baseline.rms_deviation + 1e-15) << c.name;
+    EXPECT_EQ(d.fitted_curve.size(), c.curve.x.size());
+    EXPECT_EQ(d.nominal_curve.size(), c.curve.x.size());
+    EXPECT_FALSE(d.explanation.empty());
+  }
+}
+
+TEST(ForceDiagnosis, CombinesCurvesOfOneCase) {
+  const auto cases = testing::LoadPublicForceCases();
+  std::vector<ForceDiagnosis> diagnoses;
+  for (const auto& c : cases) diagnoses.push_back(DiagnoseForceCurve(c.rod, c.test, c.curve));
+  for (const auto& d : diagnoses) {
+    const ForceCaseDiagnosis single = CombineForceDiagnoses({d});
+    EXPECT_EQ(single.effect, d.effect);
+    EXPECT_NEAR(single.confidence, d.confidence, 1e-12);
+  }
+  EXPECT_THROW_WITH(CombineForceDiagnoses({}), InvalidInput, "no force curves");
+}
+
+class ForceDiagnosisBadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    rod_.length = 0.6;
+    rod_.material.bending_stiffness = 0.01;
+    rod_.material.torsional_stiffness = 0.008;
+    test_.type = ForceTestType::kPinnedBending;
+    curve_.x = Eigen::VectorXd::LinSpaced(9, 0.005, 0.02);
+    curve_.y = NominalForceCurve(rod_, test_, curve_.x);
+  }
+  RodSpec rod_;
+  ForceTestSpec test_;
+  ForceCurve curve_;
+};
+
+TEST_F(ForceDiagnosisBadInput, TooFewRows) {
+  curve_.x.conservativeResize(3);
+  curve_.y.conservativeResize(3);
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, {}, "bending.csv"), InvalidInput,
+                    "bending.csv: 3 rows");
+}
+
+TEST_F(ForceDiagnosisBadInput, NaNIsRejected) {
+  curve_.y[4] = std::nan("");
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, {}, "b.csv"), InvalidInput,
+                    "row 5 is not a finite number");
+}
+
+TEST_F(ForceDiagnosisBadInput, DisplacementBeyondGeometricLimit) {
+  curve_.x[8] = 0.7;  // longer than the cable
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, {}, "b.csv"), InvalidInput,
+                    "geometric range");
+}
+
+TEST_F(ForceDiagnosisBadInput, MismatchedColumnsAndConstantX) {
+  ForceCurve c = curve_;
+  c.y.conservativeResize(8);
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, c), InvalidInput, "differ in length");
+  c = curve_;
+  c.x.setConstant(0.01);
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, c), InvalidInput, "never changes");
+}
+
+TEST_F(ForceDiagnosisBadInput, NonMonotonicStepsAreFine) {
+  std::swap(curve_.x[2], curve_.x[6]);
+  curve_.y = NominalForceCurve(rod_, test_, curve_.x);
+  const ForceDiagnosis d = DiagnoseForceCurve(rod_, test_, curve_);
+  EXPECT_EQ(d.effect, ForceEffect::kNone);
+}
+
+TEST_F(ForceDiagnosisBadInput, InvalidOptions) {
+  ForceDiagnosisOptions options;
+  options.offset_prior_fraction = -1.0;
+  std::string why;
+  EXPECT_FALSE(options.IsValid(&why));
+  EXPECT_NE(why.find("offset_prior_fraction"), std::string::npos);
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, options), InvalidInput,
+                    "offset_prior_fraction");
+  EXPECT_TRUE(ForceDiagnosisOptions{}.IsValid(nullptr));
+}
+
+TEST(ForceEffectNames, RoundTrip) {
+  for (ForceEffect e : {ForceEffect::kNone, ForceEffect::kStiffness, ForceEffect::kHysteresis}) {
+    EXPECT_EQ(ForceEffectFromString(ToString(e)), e);
+  }
+  EXPECT_THROW_WITH(ForceEffectFromString("twist"), InvalidInput, "unknown force effect");
+}
+
+}  // namespace
+}  // namespace cablefit
