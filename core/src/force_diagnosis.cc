@@ -42,7 +42,7 @@ std::vector<double> Scores(const std::vector<double>& criteria) {
 
 std::string Num(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.2g", v);
+  std::snprintf(buf, sizeof(buf), "%.3g", v);
   return buf;
 }
 
