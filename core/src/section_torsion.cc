@@ -168,25 +168,28 @@ TorsionGridResult SolvePrandtlTorsionOnGrid(const SectionRegion& region, int cel
   const int outside = sets.Find(node(0, 0));
   std::vector<int> unknown_of_root(n_nodes, -1);
   std::vector<int> unknown(n_nodes, -1);  // -1 = outside
-  std::vector<char> root_has_void;
+  std::vector<int> void_nodes_of;  // per unknown
   int n_unknowns = 0;
   for (int n = 0; n < n_nodes; ++n) {
     const int r = sets.Find(n);
     if (r == outside) continue;
     if (unknown_of_root[r] < 0) {
       unknown_of_root[r] = n_unknowns++;
-      root_has_void.push_back(0);
+      void_nodes_of.push_back(0);
     }
     unknown[n] = unknown_of_root[r];
-    if (!solid[n]) root_has_void[unknown[n]] = 1;
+    if (!solid[n]) ++void_nodes_of[unknown[n]];
   }
 
   TorsionGridResult result;
   result.cells = cells;
   result.spacing = h;
   result.unknowns = n_unknowns;
-  result.enclosed_voids = static_cast<int>(
-      std::count(root_has_void.begin(), root_has_void.end(), static_cast<char>(1)));
+  for (int count : void_nodes_of) {
+    if (count == 0) continue;
+    ++result.enclosed_voids;
+    result.enclosed_void_area += count * h * h;
+  }
   if (n_unknowns == 0) return result;
 
   // Discrete complementary energy sum_e (h / int_e G)/2 (dphi)^2 - sum_n 2 h^2 phi_n: its

@@ -37,7 +37,8 @@ struct TorsionGridResult {
   int cells = 0;                     // cells across the bounding box
   double spacing = 0.0;              // h [m]
   int unknowns = 0;                  // size of the linear system
-  int enclosed_voids = 0;            // holes carrying a free constant phi
+  int enclosed_voids = 0;            // holes carrying a free constant phi (incl. grid-size cusps)
+  double enclosed_void_area = 0.0;   // their area counted in grid cells [m^2]
   double torsional_stiffness = 0.0;  // GJ on this grid [N m^2]
   double seconds = 0.0;              // wall time of this grid
 };
