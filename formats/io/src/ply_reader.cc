@@ -91,6 +91,8 @@ std::vector<std::string> Tokens(const std::string& line) {
 }
 
 Header ParseHeader(const std::string& data, const std::string& path) {
+  if (data.rfind("ply\n", 0) != 0 && data.rfind("ply\r\n", 0) != 0)
+    throw FileError(path, "not a PLY file (first line is not 'ply')");
   Header header;
   std::size_t pos = 0;
   int line_no = 0;
@@ -104,10 +106,7 @@ Header ParseHeader(const std::string& data, const std::string& path) {
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::string where = "header line " + std::to_string(line_no);
-    if (line_no == 1) {
-      if (line != "ply") throw FileError(path, "not a PLY file (first line is not 'ply')");
-      continue;
-    }
+    if (line_no == 1) continue;  // the magic, checked above
     const std::vector<std::string> t = Tokens(line);
     if (t.empty() || t[0] == "comment" || t[0] == "obj_info") continue;
     if (t[0] == "end_header") {
