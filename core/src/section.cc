@@ -22,6 +22,27 @@ double SectionScale(const SectionSpec& spec) {
   return scale;
 }
 
+// A signed annulus: gap fillers are their annulus minus the discs of the parts they contain.
+struct Piece {
+  Vec2 centre;           // 2 [m]
+  double outer, inner;   // [m]
+  double sign;           // +1 material, -1 removed
+  const SectionMaterial* material;
+};
+
+std::vector<Piece> Pieces(const std::vector<SectionPart>& parts) {
+  const std::vector<std::vector<int>> excluded = FillerExclusions(parts);
+  std::vector<Piece> pieces;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const SectionPart& p = parts[i];
+    pieces.push_back({p.centre, p.outer_radius, p.inner_radius, 1.0, &p.material});
+    for (int k : excluded[i]) {
+      pieces.push_back({parts[k].centre, parts[k].outer_radius, 0.0, -1.0, &p.material});
+    }
+  }
+  return pieces;
+}
+
 std::string PartLabel(const SectionPart& p, size_t index) {
   return p.name.empty() ? "part " + std::to_string(index + 1) : "part '" + p.name + "'";
 }
@@ -56,10 +77,16 @@ void ValidateSection(const SectionSpec& spec) {
   const double tolerance = 1e-6 * SectionScale(spec);
   for (size_t i = 0; i < spec.parts.size(); ++i) {
     for (size_t j = i + 1; j < spec.parts.size(); ++j) {
-      if (PartsOverlap(spec.parts[i], spec.parts[j], tolerance)) {
-        throw InvalidInput(PartLabel(spec.parts[i], i) + " and " + PartLabel(spec.parts[j], j) +
-                           " overlap");
-      }
+      const SectionPart& a = spec.parts[i];
+      const SectionPart& b = spec.parts[j];
+      if (!PartsOverlap(a, b, tolerance)) continue;
+      if (a.fills_gaps && PartInsideAnnulus(b, a, tolerance)) continue;
+      if (b.fills_gaps && PartInsideAnnulus(a, b, tolerance)) continue;
+      const bool filler = a.fills_gaps || b.fills_gaps;
+      throw InvalidInput(PartLabel(a, i) + " and " + PartLabel(b, j) +
+                         (filler ? " overlap (a part must lie wholly inside a gap filler or "
+                                   "wholly outside it)"
+                                 : " overlap"));
     }
   }
 }
@@ -69,33 +96,56 @@ SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& opti
   std::string why;
   if (!options.IsValid(&why)) throw InvalidInput(why);
   SectionResult r;
+  const std::vector<Piece> pieces = Pieces(spec.parts);
   Vec2 first_moment = Vec2::Zero();  // 2 [N m], sum E_i A_i c_i
-  for (const SectionPart& p : spec.parts) {
-    const double r2o = p.outer_radius * p.outer_radius, r2i = p.inner_radius * p.inner_radius;
-    const double area = kPi * (r2o - r2i);
+  for (const Piece& p : pieces) {
+    const double area = p.sign * kPi * (p.outer * p.outer - p.inner * p.inner);
     r.area += area;
-    r.axial_stiffness += p.material.youngs_modulus * area;
-    r.linear_density += p.material.density * area;
-    first_moment += p.material.youngs_modulus * area * p.centre;
+    r.axial_stiffness += p.material->youngs_modulus * area;
+    r.linear_density += p.material->density * area;
+    first_moment += p.material->youngs_modulus * area * p.centre;
   }
   r.modulus_centre = first_moment / r.axial_stiffness;
 
+  // Unbonded bounds per part: own E I about the part's own centroid, and eq. 9 per part (for a
+  // gap filler the polar moment of its holed area, an over-estimate of its own GJ).
   const double coaxial_tolerance = 1e-9 * SectionScale(spec);
   r.coaxial.applies = true;
-  for (const SectionPart& p : spec.parts) {
-    const double r4 = std::pow(p.outer_radius, 4) - std::pow(p.inner_radius, 4);
-    const double area = kPi * (p.outer_radius * p.outer_radius - p.inner_radius * p.inner_radius);
-    const double own = 0.25 * kPi * p.material.youngs_modulus * r4;  // E I about own centre
-    const Vec2 offset = p.centre - r.modulus_centre;                 // 2 [m]
-    r.bending_matrix += own * Mat2::Identity() +
-                        p.material.youngs_modulus * area * offset * offset.transpose();
-    r.bending_unbonded += own;
-    r.torsion_unbonded += 0.5 * kPi * p.material.shear_modulus * r4;
+  std::vector<double> part_area(spec.parts.size(), 0.0);
+  for (const Piece& p : pieces) {
+    const double r4 = std::pow(p.outer, 4) - std::pow(p.inner, 4);
+    const double area = p.sign * kPi * (p.outer * p.outer - p.inner * p.inner);
+    const Vec2 offset = p.centre - r.modulus_centre;  // 2 [m]
+    const double e = p.material->youngs_modulus;
+    r.bending_matrix += e * (p.sign * 0.25 * kPi * r4 * Mat2::Identity() +
+                             area * offset * offset.transpose());
     if ((p.centre - spec.parts[0].centre).norm() > coaxial_tolerance) r.coaxial.applies = false;
   }
+  const std::vector<std::vector<int>> excluded = FillerExclusions(spec.parts);
+  for (size_t i = 0; i < spec.parts.size(); ++i) {
+    const SectionPart& p = spec.parts[i];
+    const double r4 = std::pow(p.outer_radius, 4) - std::pow(p.inner_radius, 4);
+    double area = kPi * (p.outer_radius * p.outer_radius - p.inner_radius * p.inner_radius);
+    Vec2 moment = area * p.centre;  // 2 [m^3]
+    double i_polar_origin = 0.5 * kPi * r4 + area * p.centre.squaredNorm();  // [m^4]
+    Mat2 i_origin = 0.25 * kPi * r4 * Mat2::Identity() + area * p.centre * p.centre.transpose();
+    for (int k : excluded[i]) {
+      const SectionPart& q = spec.parts[k];
+      const double qa = kPi * q.outer_radius * q.outer_radius, q4 = std::pow(q.outer_radius, 4);
+      area -= qa;
+      moment -= qa * q.centre;
+      i_polar_origin -= 0.5 * kPi * q4 + qa * q.centre.squaredNorm();
+      i_origin -= 0.25 * kPi * q4 * Mat2::Identity() + qa * q.centre * q.centre.transpose();
+    }
+    const Vec2 c = moment / area;  // 2 [m] the part's own centroid
+    const Mat2 own = i_origin - area * c * c.transpose();  // 2 x 2 [m^4]
+    r.bending_unbonded += p.material.youngs_modulus *
+                          Eigen::SelfAdjointEigenSolver<Mat2>(own).eigenvalues()[0];
+    r.torsion_unbonded += p.material.shear_modulus * (i_polar_origin - area * c.squaredNorm());
+  }
   if (r.coaxial.applies) {
-    r.coaxial.bending_stiffness = r.bending_unbonded;     // eq. 4
-    r.coaxial.torsional_stiffness = r.torsion_unbonded;   // eq. 9
+    r.coaxial.bending_stiffness = r.bending_matrix(0, 0);  // eq. 4 (B is isotropic)
+    r.coaxial.torsional_stiffness = r.torsion_unbonded;    // eq. 9
   }
 
   const Eigen::SelfAdjointEigenSolver<Mat2> eig(r.bending_matrix);

@@ -19,6 +19,41 @@ bool PartsOverlap(const SectionPart& a, const SectionPart& b, double tolerance) 
   return true;
 }
 
+bool PartInsideAnnulus(const SectionPart& inner, const SectionPart& outer, double tolerance) {
+  const double d = (inner.centre - outer.centre).norm();
+  return d + inner.outer_radius <= outer.outer_radius + tolerance &&
+         (outer.inner_radius == 0.0 || d - inner.outer_radius >= outer.inner_radius - tolerance);
+}
+
+std::vector<std::vector<int>> FillerExclusions(const std::vector<SectionPart>& parts) {
+  const int n = static_cast<int>(parts.size());
+  std::vector<std::vector<int>> out(n);
+  for (int f = 0; f < n; ++f) {
+    if (!parts[f].fills_gaps) continue;
+    // Valid parts are either inside the filler or apart from it by a whole radius, so a loose
+    // tolerance separates the two cases robustly against round-off.
+    const double tol = 1e-6 * parts[f].outer_radius;
+    auto disc_within = [&](int i, int j, double radius_j) {
+      return (parts[i].centre - parts[j].centre).norm() + parts[i].outer_radius <= radius_j + tol;
+    };
+    std::vector<int> inside;
+    for (int i = 0; i < n; ++i) {
+      if (i != f && disc_within(i, f, parts[f].outer_radius)) inside.push_back(i);
+    }
+    // Discs nested in another contained part's disc (a wire in a tube's bore) are excluded
+    // with it already.
+    for (int i : inside) {
+      bool nested = false;
+      for (int j : inside) {
+        const double cavity = parts[j].fills_gaps ? parts[j].outer_radius : parts[j].inner_radius;
+        nested |= j != i && disc_within(i, j, cavity);
+      }
+      if (!nested) out[f].push_back(i);
+    }
+  }
+  return out;
+}
+
 namespace {
 
 // Minimum over t in [lo, hi] of a convex function, by golden-section search.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cablefit/core/errors.h"
+#include "cablefit/core/section.h"
 
 namespace cablefit {
 namespace {
@@ -35,6 +36,47 @@ constexpr double kVoidEdgeFraction = 1e-9;
 
 }  // namespace
 
+CircularPartsRegion::CircularPartsRegion(const std::vector<SectionPart>& parts)
+    : parts_(parts), excluded_(FillerExclusions(parts)) {}
+
+namespace {
+
+// The stretches of the line {coordinate `across` = offset} inside the annulus (inner = 0: disc).
+void AnnulusIntervals(const Vec2& centre, double outer, double inner, int along, double offset,
+                      double g, std::vector<SectionInterval>* out) {
+  const double d = offset - centre[1 - along];
+  if (std::abs(d) >= outer) return;
+  const double c = centre[along];
+  const double a_out = std::sqrt(outer * outer - d * d);
+  if (std::abs(d) < inner) {
+    const double a_in = std::sqrt(inner * inner - d * d);
+    out->push_back({c - a_out, c - a_in, g});
+    out->push_back({c + a_in, c + a_out, g});
+  } else {
+    out->push_back({c - a_out, c + a_out, g});
+  }
+}
+
+// `base` minus the union of `holes` (holes disjoint from each other).
+std::vector<SectionInterval> Subtract(std::vector<SectionInterval> base,
+                                      std::vector<SectionInterval> holes) {
+  std::sort(holes.begin(), holes.end(),
+            [](const SectionInterval& a, const SectionInterval& b) { return a.begin < b.begin; });
+  std::vector<SectionInterval> out;
+  for (const SectionInterval& iv : base) {
+    double begin = iv.begin;
+    for (const SectionInterval& h : holes) {
+      if (h.end <= begin || h.begin >= iv.end) continue;
+      if (h.begin > begin) out.push_back({begin, h.begin, iv.shear_modulus});
+      begin = std::max(begin, h.end);
+    }
+    if (begin < iv.end) out.push_back({begin, iv.end, iv.shear_modulus});
+  }
+  return out;
+}
+
+}  // namespace
+
 void CircularPartsRegion::Bounds(Vec2* lo, Vec2* hi) const {
   *lo = Vec2::Constant(INFINITY);
   *hi = Vec2::Constant(-INFINITY);
@@ -45,21 +87,20 @@ void CircularPartsRegion::Bounds(Vec2* lo, Vec2* hi) const {
 }
 
 std::vector<SectionInterval> CircularPartsRegion::LineIntervals(int along, double offset) const {
-  const int across = 1 - along;
   std::vector<SectionInterval> out;
-  for (const SectionPart& p : parts_) {
-    const double d = offset - p.centre[across];
-    if (std::abs(d) >= p.outer_radius) continue;
-    const double c = p.centre[along];
-    const double a_out = std::sqrt(p.outer_radius * p.outer_radius - d * d);
+  for (size_t i = 0; i < parts_.size(); ++i) {
+    const SectionPart& p = parts_[i];
     const double g = p.material.shear_modulus;
-    if (std::abs(d) < p.inner_radius) {
-      const double a_in = std::sqrt(p.inner_radius * p.inner_radius - d * d);
-      out.push_back({c - a_out, c - a_in, g});
-      out.push_back({c + a_in, c + a_out, g});
-    } else {
-      out.push_back({c - a_out, c + a_out, g});
+    if (excluded_[i].empty()) {
+      AnnulusIntervals(p.centre, p.outer_radius, p.inner_radius, along, offset, g, &out);
+      continue;
     }
+    std::vector<SectionInterval> filler, holes;
+    AnnulusIntervals(p.centre, p.outer_radius, p.inner_radius, along, offset, g, &filler);
+    for (int k : excluded_[i]) {
+      AnnulusIntervals(parts_[k].centre, parts_[k].outer_radius, 0.0, along, offset, 0.0, &holes);
+    }
+    for (const SectionInterval& iv : Subtract(filler, holes)) out.push_back(iv);
   }
   return out;
 }

@@ -160,6 +160,33 @@ TEST(SectionTest, TapedBundleHasEnclosedVoidsAndActsAsClosedTube) {
   EXPECT_GT(taped.torsion.torsional_stiffness, bare.torsion.torsional_stiffness + tape_tube);
 }
 
+TEST(SectionTest, GapFillerWithSameMaterialAsItsWiresIsAHomogeneousDisc) {
+  const double big = 2e-3, e = 1e9, g = 0.35e9;
+  SectionSpec spec;
+  spec.parts = {Part("jacket", Vec2(0, 0), big, 0.0, e, g, 1000),
+                Part("w1", Vec2(0.9e-3, 0.1e-3), 0.8e-3, 0.0, e, g, 1000),
+                Part("w2", Vec2(-0.9e-3, -0.3e-3), 0.8e-3, 0.3e-3, e, g, 1000),
+                Part("w3", Vec2(-0.9e-3, -0.3e-3), 0.3e-3, 0.0, e, g, 1000)};
+  spec.parts[0].fills_gaps = true;
+  const SectionResult res = ComputeSection(spec, Coarse());
+  EXPECT_NEAR(res.area / (kPi * big * big), 1.0, 1e-12);
+  EXPECT_NEAR(res.bending_max / (0.25 * kPi * e * std::pow(big, 4)), 1.0, 1e-12);
+  EXPECT_NEAR(res.bending_min / (0.25 * kPi * e * std::pow(big, 4)), 1.0, 1e-12);
+  EXPECT_TRUE(testing::MatricesNear(res.modulus_centre, Vec2(0, 0), 1e-15));
+  const double gj = 0.5 * kPi * g * std::pow(big, 4);
+  EXPECT_LT(std::abs(res.torsion.torsional_stiffness / gj - 1.0), 0.003);
+  EXPECT_EQ(res.torsion.grids.back().enclosed_voids, 0);
+  // A stiffer wire moves the modulus centre towards it and stiffens the section.
+  spec.parts[1].material.youngs_modulus = 50 * e;
+  spec.parts[1].material.shear_modulus = 50 * g;
+  const SectionResult stiff = ComputeSection(spec, Coarse());
+  EXPECT_GT(stiff.modulus_centre.x(), 0.5e-3);
+  EXPECT_GT(stiff.torsion.torsional_stiffness, 1.5 * gj);
+  // A wire straddling the filler's edge is rejected.
+  spec.parts[1].centre.x() = 1.5e-3;
+  EXPECT_THROW_WITH(ValidateSection(spec), InvalidInput, "wholly inside a gap filler");
+}
+
 TEST(SectionTest, RejectsBadInputWithOneLineNamingThePart) {
   SectionSpec spec;
   EXPECT_THROW_WITH(ComputeSection(spec, Coarse()), InvalidInput, "no components");

@@ -18,7 +18,8 @@ namespace cablefit {
 using Mat2 = Eigen::Matrix2d;
 
 /// Throws InvalidInput (one line, names the part) on empty sections, non-finite or non-positive
-/// radii/moduli, inner >= outer radius, negative density, or two parts whose areas overlap.
+/// radii/moduli, inner >= outer radius, negative density, two parts whose areas overlap, or a
+/// part straddling the boundary of a gap filler.
 void ValidateSection(const SectionSpec& spec);
 
 /// Closed forms for a coaxial section (all parts share one centre): seed 000 eq. 4 and eq. 9.
@@ -45,11 +46,12 @@ struct SectionResult {
   double principal_angle = 0.0;
   CoaxialClosedForm coaxial;
   TorsionResult torsion;
-  /// Sum of the parts' own eq. 9 values grouped by common centre: the torsional stiffness when
-  /// separate wires slip freely against each other (a lower bound to the bonded value).
+  /// Sum of the parts' own eq. 9 values: the torsional stiffness when separate wires twist
+  /// freely against each other (a lower bound to the bonded value; for a gap filler its polar
+  /// moment is used, which over-estimates that part's own GJ).
   double torsion_unbonded = 0.0;      // [N m^2]
-  /// Sum of the parts' own E_i I_i about their own centres: the bending stiffness when the parts
-  /// slip freely (a lower bound to the bonded eigenvalues).
+  /// Sum of the parts' own smallest E_i I_i about their own centroids: the bending stiffness
+  /// when the parts slip freely (a lower bound to the bonded eigenvalues).
   double bending_unbonded = 0.0;      // [N m^2]
   std::vector<std::string> notes;     // modelling assumptions and limits, one sentence each
 };
@@ -62,8 +64,17 @@ SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& opti
 /// tapes around a bundle). Returns centre 2 [m] and radius [m].
 void SmallestEnclosingCircle(const std::vector<SectionPart>& parts, Vec2* centre, double* radius);
 
-/// True when the areas of `a` and `b` overlap by more than `tolerance` [m] (touching is allowed).
+/// True when the annuli of `a` and `b` overlap by more than `tolerance` [m] (touching is
+/// allowed); fills_gaps is ignored.
 bool PartsOverlap(const SectionPart& a, const SectionPart& b, double tolerance);
+
+/// True when the outer disc of `inner` lies within the annulus of `outer` (to `tolerance` [m]).
+bool PartInsideAnnulus(const SectionPart& inner, const SectionPart& outer, double tolerance);
+
+/// For every part with fills_gaps, the indices of the parts whose outer discs it excludes: the
+/// parts inside its annulus that are not themselves inside another such part's outer disc
+/// (empty lists for ordinary parts). `parts` must be valid.
+std::vector<std::vector<int>> FillerExclusions(const std::vector<SectionPart>& parts);
 
 /// The rod material a section stands for: bending_stiffness = sqrt(B_max B_min), bending_ratio =
 /// B_max / B_min, principal_angle, torsional_stiffness = bonded numerical GJ (extrapolated),

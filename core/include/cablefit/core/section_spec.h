@@ -26,9 +26,13 @@ struct SectionPart {
   double outer_radius = 0.0;   // [m]
   double inner_radius = 0.0;   // [m], 0 = solid disc
   SectionMaterial material;
+  /// A matrix (extruded jacket, filler compound): occupies its annulus minus the outer discs of
+  /// the other parts lying inside it, so it bonds them and leaves no gaps.
+  bool fills_gaps = false;
 };
 
-/// A whole cross-section: parts must not overlap (touching is allowed).
+/// A whole cross-section: parts must not overlap (touching is allowed), except that a part
+/// with fills_gaps may contain others entirely.
 struct SectionSpec {
   std::vector<SectionPart> parts;
 };

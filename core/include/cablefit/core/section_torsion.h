@@ -83,16 +83,18 @@ class SectionRegion {
   virtual double MaxShearModulus() const = 0;
 };
 
-/// Non-overlapping discs and annuli (validate first with ValidateSection). Keeps a reference.
+/// Non-overlapping discs and annuli and gap fillers (validate first with ValidateSection).
+/// Keeps a reference to `parts`.
 class CircularPartsRegion : public SectionRegion {
  public:
-  explicit CircularPartsRegion(const std::vector<SectionPart>& parts) : parts_(parts) {}
+  explicit CircularPartsRegion(const std::vector<SectionPart>& parts);
   void Bounds(Vec2* lo, Vec2* hi) const override;
   std::vector<SectionInterval> LineIntervals(int along, double offset) const override;
   double MaxShearModulus() const override;
 
  private:
   const std::vector<SectionPart>& parts_;
+  std::vector<std::vector<int>> excluded_;  // per gap filler, the discs cut out of it
 };
 
 /// An axis-aligned homogeneous rectangle (flat conductors; torsion reference tests).
