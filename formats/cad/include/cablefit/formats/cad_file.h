@@ -1,0 +1,39 @@
+// Reading harness CAD (STEP AP203/214/242, IGES) and writing relaxed cables back as STEP AP242.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/formats/harness_drawing.h"
+
+namespace cablefit {
+
+struct CadReadOptions {
+  /// Spacing of centreline samples along a curve [m]; routes get at least 16 samples.
+  double sample_spacing = 0.002;
+  /// Relative chordal deflection for tessellating other solids (fraction of their size).
+  double mesh_relative_deflection = 0.01;
+  /// A solid counts as a tube when its lateral (circular cross-section) faces are this fraction
+  /// of its area or more, and it is at least `min_tube_aspect` diameters long.
+  double min_tube_area_fraction = 0.8;
+  double min_tube_aspect = 2.0;
+  /// Cable ends closer than this [m] are recorded as one junction.
+  double junction_tolerance = 1e-4;
+
+  bool IsValid(std::string* why) const;
+};
+
+/// Reads a STEP (.step/.stp) or IGES (.iges/.igs) file with its assembly structure, names and
+/// colours. Edges and wires become cables (routes split at branch points), tube solids/shells
+/// become cables with a recovered centreline and diameter, other solids are kept as solids.
+/// Throws FileError(path, problem) for a missing, unreadable, empty or cable-less file.
+HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& options = {});
+
+/// Writes `cables` as tubes (a circle swept along a B-spline through each relaxed centreline)
+/// with the names and colours of their source cables, plus every solid of `input` unchanged, as
+/// a STEP AP242 file in millimetres. Written atomically (temp file + rename). Throws
+/// InvalidInput for a cable without a usable centreline or diameter, FileError on I/O failure.
+void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
+                      const std::vector<RelaxedCable>& cables);
+
+}  // namespace cablefit

@@ -1,0 +1,85 @@
+// A harness as drawn in CAD, in neutral types: the cables' routes and the other solids around
+// them (clips, brackets, housings). Produced by ReadCadFile(), consumed by the relax stage and by
+// WriteRelaxedStep(). All lengths in metres, whatever unit the file used.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cablefit/core/geometry_types.h"
+
+namespace cablefit {
+
+/// Where a cable's centreline came from.
+enum class CableSourceKind {
+  kCurve,  ///< an edge or wire (B-spline, polyline, lines and arcs chained into one route)
+  kTube,   ///< a tube solid or shell (a circle swept along the route), centreline recovered
+  kMesh,   ///< a tessellated tube, centreline recovered by a skeleton
+};
+const char* ToString(CableSourceKind kind);
+
+/// An sRGB colour, components in [0, 1] (the values a CAD user sees, not linear RGB).
+struct SrgbColor {
+  double r = 0.5, g = 0.5, b = 0.5;
+};
+
+/// The CAD shape behind a drawn item, kept so a writer can copy it unchanged. Opaque: its
+/// definition lives in the CAD adapter, no CAD type leaks into this header.
+struct CadShapeHandle;
+
+/// One cable route.
+struct DrawnCable {
+  std::string name;              ///< the product/label name; "<name>#k" when one shape held k routes
+  bool has_color = false;
+  SrgbColor color;
+  Polyline centreline;           ///< s from 0 [m], points 3 x n [m]
+  double diameter = 0.0;         ///< [m]; 0 when unknown (a bare curve)
+  CableSourceKind source = CableSourceKind::kCurve;
+  /// How far the recovered centreline may be from the true one [m]: for a curve, the largest
+  /// chord deviation of the sampling; for a tube, the RMS residual of the cross-section circle
+  /// fits (or of the surface distance to the tube for a mesh).
+  double fit_error = 0.0;
+};
+
+/// A non-cable solid (clip, bracket): its shape is copied unchanged by the writer.
+struct DrawnSolid {
+  std::string name;
+  bool has_color = false;
+  SrgbColor color;
+  TriangleMesh mesh;  ///< tessellation [m], for support and contact detection
+  std::shared_ptr<const CadShapeHandle> shape;  ///< null when not read from CAD
+};
+
+/// Cable ends that coincide: a branch point of a bundle (three or more ends) or a splice.
+struct CableJunction {
+  Vec3 position = Vec3::Zero();  // [m]
+  struct End {
+    int cable = 0;        ///< index into HarnessDrawing::cables
+    bool at_start = true; ///< the end at s = 0 (else at s = length)
+  };
+  std::vector<End> ends;
+};
+
+struct HarnessDrawing {
+  std::string source_path;
+  std::string length_unit = "m";  ///< the unit the file declared ("mm", "m", "inch", ...)
+  std::vector<DrawnCable> cables;
+  std::vector<DrawnSolid> solids;
+  std::vector<CableJunction> junctions;
+};
+
+/// Finds cable ends closer than `tolerance` [m] to each other and records them as junctions
+/// (only groups of two or more ends). Replaces `drawing->junctions`.
+void FindJunctions(HarnessDrawing* drawing, double tolerance);
+
+/// A relaxed cable to be written: a new centreline for input cable `source_cable`.
+struct RelaxedCable {
+  int source_cable = 0;  ///< index into the input HarnessDrawing::cables (name, colour, diameter)
+  Polyline centreline;   ///< points 3 x n [m], n >= 2
+  /// Tube diameter [m] for the output; 0 = the drawn diameter of the source cable.
+  double diameter = 0.0;
+};
+
+}  // namespace cablefit

@@ -1,0 +1,39 @@
+// Tessellated cables (STL, OBJ, PLY, glTF, 3MF ... through assimp): each connected component is
+// skeletonised and its skeleton split at branch points into routes with a diameter.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/core/geometry_types.h"
+
+namespace cablefit {
+
+/// A tube recovered from a mesh.
+struct MeshTube {
+  int component = 0;     ///< which connected component of the mesh it came from
+  Polyline centreline;   ///< s from 0 [m], points 3 x n [m]; starts at its lexicographically
+                         ///< smaller end (x, then y, then z) so the result is deterministic
+  double diameter = 0.0; ///< [m], twice the median distance of its surface to the centreline
+  double fit_error = 0.0;///< RMS of (surface distance to centreline - radius) [m]
+};
+
+/// Reads a mesh file and recovers its tubes. `unit` is the length of one file unit in metres
+/// (meshes carry no unit: 0.001 for millimetres). Throws FileError(path, problem) when the file
+/// cannot be read, holds no triangles, or a component is not a tube.
+std::vector<MeshTube> ReadMeshFile(const std::string& path, double unit);
+
+/// Reads the triangles of a mesh file, vertices welded, scaled by `unit` [m per file unit].
+TriangleMesh ReadTriangleMesh(const std::string& path, double unit);
+
+/// Recovers the tubes of an already loaded mesh [m] (see ReadMeshFile). Throws InvalidInput.
+std::vector<MeshTube> RecoverTubes(const TriangleMesh& mesh);
+
+/// A closed triangulated tube of diameter `diameter` [m] around `centreline` (flat caps),
+/// `sides` vertices per ring. For tests, samples and exporting relaxed cables as meshes.
+TriangleMesh SweepTubeMesh(const Polyline& centreline, double diameter, int sides = 24);
+
+/// Writes `mesh` [m] scaled by 1/`unit` as STL, OBJ or PLY (chosen by extension), atomically.
+void WriteMeshFile(const std::string& path, const TriangleMesh& mesh, double unit);
+
+}  // namespace cablefit

@@ -1,0 +1,136 @@
+#include "skeleton_routes.h"
+
+#include <functional>
+#include <numeric>
+
+namespace cablefit {
+
+std::vector<TriangleMesh> ConnectedComponents(const TriangleMesh& mesh) {
+  const int nv = static_cast<int>(mesh.vertices.cols());
+  std::vector<int> parent(nv);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> find = [&](int v) { return parent[v] == v ? v : parent[v] = find(parent[v]); };
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
+    for (int k = 1; k < 3; ++k) parent[find(mesh.faces(k, f))] = find(mesh.faces(0, f));
+  }
+  std::vector<int> component_of_root(nv, -1), local(nv, -1);
+  std::vector<std::vector<int>> component_vertices;
+  std::vector<std::vector<int>> component_faces;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
+    const int root = find(mesh.faces(0, f));
+    if (component_of_root[root] < 0) {
+      component_of_root[root] = static_cast<int>(component_faces.size());
+      component_faces.emplace_back();
+      component_vertices.emplace_back();
+    }
+    const int c = component_of_root[root];
+    component_faces[c].push_back(static_cast<int>(f));
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.faces(k, f);
+      if (local[v] < 0) {
+        local[v] = static_cast<int>(component_vertices[c].size());
+        component_vertices[c].push_back(v);
+      }
+    }
+  }
+  std::vector<TriangleMesh> result(component_faces.size());
+  for (size_t c = 0; c < result.size(); ++c) {
+    TriangleMesh& m = result[c];
+    m.vertices.resize(3, static_cast<Eigen::Index>(component_vertices[c].size()));
+    for (size_t i = 0; i < component_vertices[c].size(); ++i) {
+      m.vertices.col(static_cast<Eigen::Index>(i)) = mesh.vertices.col(component_vertices[c][i]);
+    }
+    m.faces.resize(3, static_cast<Eigen::Index>(component_faces[c].size()));
+    for (size_t i = 0; i < component_faces[c].size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        m.faces(k, static_cast<Eigen::Index>(i)) = local[mesh.faces(k, component_faces[c][i])];
+      }
+    }
+  }
+  return result;
+}
+
+std::vector<SkeletonRoute> SplitSkeleton(const CurveSkeleton& skeleton, double min_spur) {
+  const int n = static_cast<int>(skeleton.nodes.cols());
+  std::vector<std::vector<int>> adjacent(n);
+  for (const auto& [a, b] : skeleton.edges) {
+    if (a == b) continue;
+    adjacent[a].push_back(b);
+    adjacent[b].push_back(a);
+  }
+  std::vector<bool> removed(n, false);
+  auto degree = [&](int v) {
+    int d = 0;
+    for (int w : adjacent[v]) d += removed[w] ? 0 : 1;
+    return d;
+  };
+  auto next_on_path = [&](int previous, int v) {
+    for (int w : adjacent[v]) {
+      if (!removed[w] && w != previous) return w;
+    }
+    return -1;
+  };
+  // Spurs: short side branches that mean-curvature flow leaves at bumps and caps.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int v = 0; v < n; ++v) {
+      if (removed[v] || degree(v) != 1) continue;
+      std::vector<int> path{v};
+      double length = 0;
+      int previous = -1, current = v;
+      while (true) {
+        const int next = next_on_path(previous, current);
+        if (next < 0) break;
+        length += (skeleton.nodes.col(next) - skeleton.nodes.col(current)).norm();
+        previous = current;
+        current = next;
+        if (degree(current) != 2) break;
+        path.push_back(current);
+      }
+      if (degree(current) >= 3 && length < min_spur) {
+        for (int p : path) removed[p] = true;
+        changed = true;
+      }
+    }
+  }
+  std::vector<SkeletonRoute> routes;
+  std::vector<std::vector<bool>> used(n);
+  for (int v = 0; v < n; ++v) used[v].assign(adjacent[v].size(), false);
+  auto mark = [&](int a, int b) {
+    for (size_t i = 0; i < adjacent[a].size(); ++i) if (adjacent[a][i] == b) used[a][i] = true;
+    for (size_t i = 0; i < adjacent[b].size(); ++i) if (adjacent[b][i] == a) used[b][i] = true;
+  };
+  auto walk = [&](int start, size_t first) {
+    SkeletonRoute route;
+    route.nodes = {start};
+    route.start_is_end = degree(start) == 1;
+    int previous = start, current = adjacent[start][first];
+    mark(previous, current);
+    while (true) {
+      route.nodes.push_back(current);
+      if (degree(current) != 2 || current == start) break;
+      int next = -1;
+      for (size_t i = 0; i < adjacent[current].size(); ++i) {
+        const int w = adjacent[current][i];
+        if (!removed[w] && w != previous && !used[current][i]) next = w;
+      }
+      if (next < 0) break;
+      mark(current, next);
+      previous = current;
+      current = next;
+    }
+    route.finish_is_end = degree(route.nodes.back()) == 1;
+    return route;
+  };
+  for (int pass = 0; pass < 2; ++pass) {  // pass 0: from ends and branch points; 1: cycles
+    for (int v = 0; v < n; ++v) {
+      if (removed[v] || (pass == 0 && degree(v) == 2)) continue;
+      for (size_t i = 0; i < adjacent[v].size(); ++i) {
+        if (!removed[adjacent[v][i]] && !used[v][i]) routes.push_back(walk(v, i));
+      }
+    }
+  }
+  return routes;
+}
+
+}  // namespace cablefit

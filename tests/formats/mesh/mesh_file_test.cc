@@ -1,0 +1,112 @@
+#include "cablefit/formats/mesh_file.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "cablefit/core/errors.h"
+#include "curve_distance.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+using testing::MaxDistanceToPolyline;
+using testing::SampleCurve;
+
+// 100 mm straight, a quarter bend of radius 60 mm, 120 mm straight (in the z = 20 mm plane).
+Vec3 BentRoute(double u) {
+  const double bend = 0.5 * M_PI * 0.06, total = 0.1 + bend + 0.12, s = u * total;
+  if (s <= 0.1) return {s, 0, 0.02};
+  if (s <= 0.1 + bend) {
+    const double a = (s - 0.1) / 0.06;
+    return {0.1 + 0.06 * std::sin(a), 0.06 - 0.06 * std::cos(a), 0.02};
+  }
+  return {0.16, 0.06 + (s - 0.1 - bend), 0.02};
+}
+
+TEST(MeshFile, BentTubeStlReadsBackWithinOnePercentOfDiameter) {
+  const double diameter = 0.010;
+  const Polyline truth = SampleCurve(BentRoute, 4001);
+  const TriangleMesh tube = SweepTubeMesh(SampleCurve(BentRoute, 161), diameter, 32);
+  const auto path = (testing::FreshTempDir("mesh_bent") / "tube.stl").string();
+  WriteMeshFile(path, tube, 0.001);  // millimetres in the file
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
+  std::printf("bent tube STL (%ld triangles) -> centreline: %.0f ms\n",
+              static_cast<long>(tube.faces.cols()),
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  ASSERT_EQ(tubes.size(), 1u);
+  EXPECT_NEAR(tubes[0].diameter, diameter, 0.01 * diameter);
+  EXPECT_LT(MaxDistanceToPolyline(tubes[0].centreline, truth), 0.01 * diameter);
+  EXPECT_LT(MaxDistanceToPolyline(truth, tubes[0].centreline), 0.01 * diameter);  // ends reached
+  EXPECT_LT(tubes[0].fit_error, 0.01 * diameter);
+  // Deterministic orientation: starts at the lexicographically smaller end (x = 0).
+  EXPECT_NEAR(tubes[0].centreline.points(0, 0), 0.0, 0.01 * diameter);
+}
+
+TEST(MeshFile, SampleStlHasTwoBentTubes) {
+  const auto path = (testing::SourceDir() / "samples/harness/bent_tubes.stl").string();
+  std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
+  ASSERT_EQ(tubes.size(), 2u);
+  std::sort(tubes.begin(), tubes.end(), [](auto& a, auto& b) { return a.diameter > b.diameter; });
+  // See formats/cad/tools/make_sample_harness.cc: 10 mm along 100 + quarter arc R60 + 140 mm,
+  // 8 mm along an S-shaped spline from (0, 100, 50) to (240, 100, 50) mm.
+  EXPECT_NEAR(tubes[0].diameter, 0.010, 0.0001);
+  EXPECT_NEAR(tubes[1].diameter, 0.008, 0.00008);
+  EXPECT_NEAR(tubes[0].centreline.ChordLength(), 0.1 + 0.03 * M_PI + 0.14, 0.001);
+  EXPECT_NEAR((tubes[0].centreline.points.col(0) - Vec3(0, 0, 0)).norm(), 0, 0.0001);
+  EXPECT_NEAR((tubes[0].centreline.points.rightCols<1>() - Vec3(0.16, 0.2, 0)).norm(), 0, 0.0001);
+  EXPECT_NEAR((tubes[1].centreline.points.col(0) - Vec3(0, 0.1, 0.05)).norm(), 0, 0.00008);
+  EXPECT_NEAR((tubes[1].centreline.points.rightCols<1>() - Vec3(0.24, 0.1, 0.05)).norm(), 0, 0.00008);
+}
+
+TEST(MeshFile, ObjRoundTripKeepsTheMesh) {
+  const TriangleMesh tube = SweepTubeMesh(SampleCurve(BentRoute, 21), 0.008, 12);
+  const auto path = (testing::FreshTempDir("mesh_obj") / "tube.obj").string();
+  WriteMeshFile(path, tube, 0.001);
+  const TriangleMesh back = ReadTriangleMesh(path, 0.001);
+  EXPECT_EQ(back.vertices.cols(), tube.vertices.cols());
+  EXPECT_EQ(back.faces.cols(), tube.faces.cols());
+  EXPECT_TRUE(testing::MatricesNear(back.vertices.rowwise().maxCoeff(),
+                                    tube.vertices.rowwise().maxCoeff(), 1e-6));
+}
+
+TEST(MeshFile, BadInputGivesOneLineFileErrors) {
+  const auto dir = testing::FreshTempDir("mesh_bad");
+  auto write = [&](const std::string& name, const std::string& text) {
+    const auto p = (dir / name).string();
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  };
+  EXPECT_THROW_WITH(ReadMeshFile((dir / "missing.stl").string(), 0.001), FileError, "no such file");
+  EXPECT_THROW_WITH(ReadMeshFile(write("empty.stl", ""), 0.001), FileError, "empty");
+  EXPECT_THROW_WITH(ReadMeshFile(write("garbage.ply", "no mesh here\n\x01\x02"), 0.001), FileError,
+                    "not a readable mesh");
+  // A cube is closed and manifold but not a tube.
+  TriangleMesh cube;
+  cube.vertices.resize(3, 8);
+  for (int i = 0; i < 8; ++i) cube.vertices.col(i) << 0.02 * (i & 1), 0.02 * ((i >> 1) & 1), 0.02 * (i >> 2);
+  cube.faces.resize(3, 12);
+  cube.faces << 0, 0, 4, 4, 0, 0, 2, 2, 0, 0, 1, 1,
+                2, 3, 5, 7, 1, 5, 6, 7, 4, 6, 3, 7,
+                3, 1, 7, 6, 5, 4, 7, 3, 6, 2, 7, 5;
+  const auto cube_path = (dir / "cube.stl").string();
+  WriteMeshFile(cube_path, cube, 0.001);
+  EXPECT_THROW_WITH(ReadMeshFile(cube_path, 0.001), FileError, "not a tube");
+  // An open surface (one triangle) cannot be skeletonised.
+  TriangleMesh open;
+  open.vertices = Eigen::Matrix3d::Identity();
+  open.faces = Eigen::Matrix3Xi(3, 1);
+  open.faces << 0, 1, 2;
+  const auto open_path = (dir / "open.stl").string();
+  WriteMeshFile(open_path, open, 0.001);
+  EXPECT_THROW_WITH(ReadMeshFile(open_path, 0.001), FileError, "not a closed surface");
+  EXPECT_THROW_WITH(WriteMeshFile((dir / "x.dxf").string(), cube, 0.001), FileError, "extension");
+}
+
+}  // namespace
+}  // namespace cablefit
