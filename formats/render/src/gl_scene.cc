@@ -1,0 +1,245 @@
+#define GL_GLEXT_PROTOTYPES 1
+#include "gl_scene.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "cablefit/core/errors.h"
+#include "osmesa_context.h"
+#include "tube_mesh.h"
+
+namespace cablefit::render {
+namespace {
+
+// Per-pixel shading for colour-coded tubes. A plain headlight would darken a tube seen at an
+// angle to its axis (no normal then faces the viewer), changing the colour the eye reads. So the
+// headlight term is measured against the best normal available around the axis, as in lit
+// stream lines (M. Zoeckler, D. Stalling, H.-C. Hege, "Interactive visualization of 3D-vector
+// fields using illuminated stream lines", IEEE Visualization 1996): the line of the tube that
+// faces the viewer shows the colour-map entry exactly, whatever the tube's direction. A small
+// glint from an upper-left key light adds depth without shifting hue.
+constexpr const char* kVertexShader = R"(#version 120
+varying vec3 normal;
+varying vec3 tangent;
+varying vec3 colour;
+void main() {
+  normal = normalize(gl_NormalMatrix * gl_Normal);
+  tangent = gl_NormalMatrix * gl_MultiTexCoord0.xyz;
+  colour = gl_Color.rgb;
+  gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+}
+)";
+
+constexpr const char* kFragmentShader = R"(#version 120
+varying vec3 normal;
+varying vec3 tangent;
+varying vec3 colour;
+const vec3 key = vec3(-0.35, 0.45, 0.82);
+void main() {
+  vec3 n = normalize(gl_FrontFacing ? normal : -normal);
+  vec3 view = vec3(0.0, 0.0, 1.0);
+  float head = max(n.z, 0.0);
+  if (dot(tangent, tangent) > 0.25) {
+    vec3 t = normalize(tangent);
+    vec3 across = view - t.z * t;
+    if (dot(across, across) > 1e-4) head = max(dot(n, normalize(across)), 0.0);
+  }
+  float glint = pow(max(dot(n, normalize(key + view)), 0.0), 40.0);
+  gl_FragColor = vec4(colour * (0.32 + 0.68 * head) + vec3(0.14 * glint), 1.0);
+}
+)";
+
+GLuint Compile(GLenum kind, const char* source) {
+  const GLuint shader = glCreateShader(kind);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[1024] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    CABLEFIT_CHECK(false, std::string("shader compilation failed: ") + log);
+  }
+  return shader;
+}
+
+GLuint BuildProgram() {
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, Compile(GL_VERTEX_SHADER, kVertexShader));
+  glAttachShader(program, Compile(GL_FRAGMENT_SHADER, kFragmentShader));
+  glLinkProgram(program);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  CABLEFIT_CHECK(ok, "shader program failed to link");
+  return program;
+}
+
+struct SceneMeshes {
+  TubeMesh tubes;
+  TubeMesh halos;
+};
+
+SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides) {
+  SceneMeshes meshes;
+  for (const SceneTube& tube : scene.tubes) {
+    const Eigen::Index n = tube.centreline.points.cols();
+    std::vector<Rgb> colours(static_cast<std::size_t>(n), tube.flat_colour);
+    if (tube.deviation.size() == n)
+      for (Eigen::Index i = 0; i < n; ++i)
+        colours[static_cast<std::size_t>(i)] = scale.Map(tube.deviation[i] * 1e3);
+    meshes.tubes.Append(BuildTubeMesh(tube.centreline.points, tube.radius, sides, colours));
+  }
+  for (const ArcHighlight& h : scene.highlights) {
+    if (h.tube < 0 || h.tube >= static_cast<int>(scene.tubes.size())) continue;
+    const SceneTube& tube = scene.tubes[static_cast<std::size_t>(h.tube)];
+    Polyline line = tube.centreline;
+    if (line.s.size() != line.points.cols()) line.ParameteriseByChords();
+    const Eigen::Matrix3Xd part = SliceByArcLength(line.s, line.points, h.s_begin, h.s_end);
+    const std::vector<Rgb> red(static_cast<std::size_t>(part.cols()), Rgb{214, 39, 40});
+    meshes.halos.Append(BuildTubeMesh(part, tube.radius * 1.9, sides, red));
+  }
+  return meshes;
+}
+
+void DrawMesh(const TubeMesh& mesh) {
+  if (mesh.indices.empty()) return;
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  glTexCoordPointer(3, GL_FLOAT, 0, mesh.tangents.data());
+  glVertexPointer(3, GL_FLOAT, 0, mesh.positions.data());
+  glNormalPointer(GL_FLOAT, 0, mesh.normals.data());
+  glColorPointer(3, GL_FLOAT, 0, mesh.colours.data());
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.indices.size()), GL_UNSIGNED_INT,
+                 mesh.indices.data());
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+}
+
+void DrawPoints(const Eigen::Matrix3Xd& points, GLenum mode) {
+  if (points.cols() == 0) return;
+  const Eigen::Matrix3Xf p = points.cast<float>();
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, p.data());
+  glDrawArrays(mode, 0, static_cast<GLsizei>(p.cols()));
+  glDisableClientState(GL_VERTEX_ARRAY);
+}
+
+// Loads projection and model-view so that GL maps world points exactly where
+// ViewCamera::Project puts them (relative to the panel's viewport).
+void SetUpCamera(const ViewCamera& camera, const std::vector<Eigen::Vector3d>& bounds, int supersample,
+                 int buffer_height) {
+  const int s = supersample;
+  glViewport(camera.x * s, buffer_height - (camera.y + camera.height) * s, camera.width * s,
+             camera.height * s);
+  glScissor(camera.x * s, buffer_height - (camera.y + camera.height) * s, camera.width * s,
+            camera.height * s);
+  const double ppm = camera.pixels_per_metre;
+  const double left = camera.centre.x() + (camera.x - camera.origin_px.x()) / ppm;
+  const double right = camera.centre.x() + (camera.x + camera.width - camera.origin_px.x()) / ppm;
+  const double top = camera.centre.y() + (camera.origin_px.y() - camera.y) / ppm;
+  const double bottom = camera.centre.y() - (camera.y + camera.height - camera.origin_px.y()) / ppm;
+  double zmin = 0.0, zmax = 0.0;
+  for (std::size_t i = 0; i < bounds.size(); ++i) {
+    const double z = camera.rotation.row(2).dot(bounds[i]);
+    zmin = i == 0 ? z : std::min(zmin, z);
+    zmax = i == 0 ? z : std::max(zmax, z);
+  }
+  const double margin = 0.05 * (zmax - zmin) + 1e-3;
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(left, right, bottom, top, 0.0, zmax - zmin + 2 * margin);
+  glMatrixMode(GL_MODELVIEW);
+  double m[16] = {};  // column-major [R | t]: eye z = view z - (zmax + margin)
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) m[c * 4 + r] = camera.rotation(r, c);
+  m[14] = -(zmax + margin);
+  m[15] = 1.0;
+  glLoadMatrixd(m);
+}
+
+std::vector<Eigen::Vector3d> DepthBounds(const Scene& scene) {
+  std::vector<Eigen::Vector3d> bounds;
+  auto add = [&](const Eigen::Matrix3Xd& points, double pad) {
+    for (Eigen::Index i = 0; i < points.cols(); ++i) {
+      if (!points.col(i).allFinite()) continue;
+      for (int k = 0; k < 3; ++k) {
+        bounds.push_back(points.col(i) + pad * Eigen::Vector3d::Unit(k));
+        bounds.push_back(points.col(i) - pad * Eigen::Vector3d::Unit(k));
+      }
+    }
+  };
+  for (const SceneTube& tube : scene.tubes) add(tube.centreline.points, tube.radius * 2.5);
+  for (const SceneGhost& ghost : scene.ghosts) add(ghost.points, 0.0);
+  add(scene.scan_points, 0.0);
+  return bounds;
+}
+
+}  // namespace
+
+Image RenderPanels3d(int width, int height, int supersample, Rgb background,
+                     const std::vector<const Scene*>& scenes, const std::vector<ColourScale>& scales,
+                     const std::vector<GlPanelJob>& jobs, const RenderOptions& options) {
+  const int s = supersample;
+  OffscreenContext context(width * s, height * s);
+  const GLuint program = BuildProgram();
+  std::map<const Scene*, SceneMeshes> meshes;
+  std::map<const Scene*, std::vector<Eigen::Vector3d>> bounds;
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    meshes[scenes[k]] = BuildMeshes(*scenes[k], scales[k], options.tube_sides);
+    bounds[scenes[k]] = DepthBounds(*scenes[k]);
+  }
+  glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
+  glDisable(GL_SCISSOR_TEST);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (const GlPanelJob& job : jobs) {
+    const Scene& scene = *job.scene;
+    const SceneMeshes& m = meshes.at(job.scene);
+    SetUpCamera(job.camera, bounds.at(job.scene), s, height * s);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    // Halos first, without depth writes: the tube drawn next covers them, so only a red rim
+    // around the highlighted stretch remains and the deviation colours stay untouched.
+    if (!m.halos.indices.empty()) {
+      glUseProgram(0);
+      glEnable(GL_BLEND);
+      glDepthMask(GL_FALSE);
+      glDisableClientState(GL_COLOR_ARRAY);
+      glEnableClientState(GL_VERTEX_ARRAY);
+      glColor4f(214 / 255.0f, 39 / 255.0f, 40 / 255.0f, 0.35f);
+      glVertexPointer(3, GL_FLOAT, 0, m.halos.positions.data());
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.halos.indices.size()), GL_UNSIGNED_INT,
+                     m.halos.indices.data());
+      glDisableClientState(GL_VERTEX_ARRAY);
+      glDepthMask(GL_TRUE);
+      glDisable(GL_BLEND);
+    }
+    glUseProgram(program);
+    DrawMesh(m.tubes);
+    glUseProgram(0);
+    glLineWidth(static_cast<float>(1.7 * s));
+    for (const SceneGhost& ghost : scene.ghosts) {
+      glColor3ub(ghost.colour.r, ghost.colour.g, ghost.colour.b);
+      DrawPoints(ghost.points, GL_LINE_STRIP);
+    }
+    if (options.show_scan_points && scene.scan_points.cols() > 0) {
+      glPointSize(static_cast<float>(1.5 * s));
+      glColor3ub(70, 70, 70);
+      DrawPoints(scene.scan_points, GL_POINTS);
+    }
+  }
+  glDeleteProgram(program);
+  return context.ReadPixels();
+}
+
+}  // namespace cablefit::render

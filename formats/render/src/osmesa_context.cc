@@ -1,0 +1,49 @@
+#include "osmesa_context.h"
+
+#include <GL/osmesa.h>
+
+#include <string>
+
+#include "cablefit/core/errors.h"
+
+namespace cablefit::render {
+
+OffscreenContext::OffscreenContext(int width, int height) : width_(width), height_(height) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw InvalidInput("off-screen buffer size " + std::to_string(width) + " x " +
+                       std::to_string(height) + " is not supported (1 .. 16384)");
+  // The compatibility profile keeps client-side vertex arrays and GLSL 1.20 built-ins,
+  // which is all this renderer needs.
+  const int attributes[] = {OSMESA_FORMAT,      OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
+                            OSMESA_STENCIL_BITS, 0,          OSMESA_PROFILE,    OSMESA_COMPAT_PROFILE,
+                            0};
+  OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
+  if (!context) throw InvalidInput("OSMesa could not create an off-screen GL context");
+  buffer_.assign(static_cast<std::size_t>(width) * height * 4, 0);
+  if (!OSMesaMakeCurrent(context, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
+    OSMesaDestroyContext(context);
+    throw InvalidInput("OSMesa could not bind the off-screen buffer");
+  }
+  context_ = context;
+}
+
+OffscreenContext::~OffscreenContext() {
+  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+}
+
+Image OffscreenContext::ReadPixels() const {
+  glFinish();
+  Image image = Image::Filled(width_, height_, Rgb{});
+  for (int y = 0; y < height_; ++y) {
+    const std::uint8_t* src = buffer_.data() + static_cast<std::size_t>(height_ - 1 - y) * width_ * 4;
+    std::uint8_t* dst = image.pixels.data() + static_cast<std::size_t>(y) * width_ * 3;
+    for (int x = 0; x < width_; ++x) {
+      dst[3 * x] = src[4 * x];
+      dst[3 * x + 1] = src[4 * x + 1];
+      dst[3 * x + 2] = src[4 * x + 2];
+    }
+  }
+  return image;
+}
+
+}  // namespace cablefit::render

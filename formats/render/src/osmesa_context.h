@@ -1,0 +1,34 @@
+// The only place that owns an OSMesa context: creation, making it current, pixel read-back.
+// Everything else issues plain GL calls against whatever context is current.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cablefit/formats/image.h"
+
+namespace cablefit::render {
+
+/// An off-screen GL 2.1+ compatibility context rendering into a CPU buffer (llvmpipe).
+/// Made current on construction, for the calling thread. Non-copyable.
+class OffscreenContext {
+ public:
+  /// Throws InvalidInput when OSMesa cannot create a context of that size.
+  OffscreenContext(int width, int height);
+  ~OffscreenContext();
+  OffscreenContext(const OffscreenContext&) = delete;
+  OffscreenContext& operator=(const OffscreenContext&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  /// Finishes rendering and returns the buffer as an image with row 0 at the top.
+  Image ReadPixels() const;
+
+ private:
+  int width_;
+  int height_;
+  void* context_ = nullptr;  // OSMesaContext
+  std::vector<std::uint8_t> buffer_;  // RGBA, bottom row first (GL convention)
+};
+
+}  // namespace cablefit::render

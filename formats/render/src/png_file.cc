@@ -1,0 +1,141 @@
+#include "cablefit/formats/png_file.h"
+
+#include <png.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "cablefit/core/errors.h"
+
+namespace cablefit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PngError {
+  std::string message;
+};
+
+[[noreturn]] void OnPngError(png_structp, png_const_charp message) {
+  // libpng requires this not to return; an exception unwinds out of its C frames, which is safe
+  // for libpng (no resources are held across the callback that we do not release ourselves).
+  throw PngError{message ? message : "libpng error"};
+}
+
+void OnPngWarning(png_structp, png_const_charp) {}
+
+void AppendBytes(png_structp png, png_bytep data, png_size_t length) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+  out->insert(out->end(), data, data + length);
+}
+
+void NoFlush(png_structp) {}
+
+std::string TempName(const fs::path& target) {
+  static std::atomic<unsigned> counter{0};
+  return target.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodePng(const Image& image) {
+  CABLEFIT_CHECK(image.width > 0 && image.height > 0 &&
+                     image.pixels.size() == static_cast<std::size_t>(image.width) * image.height * 3,
+                 "EncodePng needs a non-empty RGB image");
+  std::vector<std::uint8_t> bytes;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, OnPngError, OnPngWarning);
+  CABLEFIT_CHECK(png != nullptr, "png_create_write_struct failed");
+  png_infop info = png_create_info_struct(png);
+  try {
+    CABLEFIT_CHECK(info != nullptr, "png_create_info_struct failed");
+    png_set_write_fn(png, &bytes, AppendBytes, NoFlush);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+                 static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    // Level 6 is the zlib default; pictures are mostly flat colour and compress well anyway.
+    png_set_compression_level(png, 6);
+    png_write_info(png, info);
+    for (int y = 0; y < image.height; ++y) {
+      png_write_row(png, const_cast<png_bytep>(image.pixels.data() +
+                                               static_cast<std::size_t>(y) * image.width * 3));
+    }
+    png_write_end(png, nullptr);
+  } catch (const PngError& e) {
+    png_destroy_write_struct(&png, &info);
+    throw InvalidInput("PNG encoding failed: " + e.message);
+  }
+  png_destroy_write_struct(&png, &info);
+  return bytes;
+}
+
+void WritePng(const std::string& path, const Image& image) {
+  const std::vector<std::uint8_t> bytes = EncodePng(image);
+  const fs::path target(path);
+  std::error_code ec;
+  if (target.has_parent_path()) {
+    fs::create_directories(target.parent_path(), ec);
+    if (ec) throw FileError(path, "cannot create directory: " + ec.message());
+  }
+  const std::string temp = TempName(target);
+  std::FILE* file = std::fopen(temp.c_str(), "wb");
+  if (!file) throw FileError(path, std::string("cannot open for writing: ") + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() &&
+                       std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+  const int err = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) {
+    fs::remove(temp, ec);
+    throw FileError(path, std::string("write failed: ") + std::strerror(err));
+  }
+  fs::rename(temp, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw FileError(path, "cannot replace file: " + ec.message());
+  }
+}
+
+Image ReadPng(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw FileError(path, std::string("cannot open: ") + std::strerror(errno));
+  png_byte signature[8];
+  if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0)
+    throw FileError(path, "not a PNG file");
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, OnPngError, OnPngWarning);
+  CABLEFIT_CHECK(png != nullptr, "png_create_read_struct failed");
+  png_infop info = png_create_info_struct(png);
+  Image image;
+  try {
+    CABLEFIT_CHECK(info != nullptr, "png_create_info_struct failed");
+    png_init_io(png, file.get());
+    png_set_sig_bytes(png, 8);
+    png_read_info(png, info);
+    png_set_expand(png);
+    png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    png_set_gray_to_rgb(png);
+    png_read_update_info(png, info);
+    const int width = static_cast<int>(png_get_image_width(png, info));
+    const int height = static_cast<int>(png_get_image_height(png, info));
+    if (png_get_rowbytes(png, info) != static_cast<std::size_t>(width) * 3)
+      throw PngError{"unsupported pixel layout"};
+    image = Image::Filled(width, height, Rgb{});
+    std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+    for (int y = 0; y < height; ++y)
+      rows[static_cast<std::size_t>(y)] = image.pixels.data() + static_cast<std::size_t>(y) * width * 3;
+    png_read_image(png, rows.data());
+    png_read_end(png, nullptr);
+  } catch (const PngError& e) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    throw FileError(path, "invalid PNG: " + e.message);
+  }
+  png_destroy_read_struct(&png, &info, nullptr);
+  return image;
+}
+
+}  // namespace cablefit

@@ -1,0 +1,156 @@
+#include "cablefit/formats/deviation_views.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cablefit/core/errors.h"
+#include "cablefit/formats/png_file.h"
+#include "synthetic_scene.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+// llvmpipe's output varies slightly with SIMD width; shading adds a little on top.
+constexpr double kColourTolerance = 40.0;
+
+bool InAnyPanel(const ViewLayout& layout, int x, int y) {
+  for (const auto& p : layout.panels)
+    if (x >= p.camera.x && x < p.camera.x + p.camera.width && y >= p.camera.y && y < p.camera.y + p.camera.height)
+      return true;
+  return false;
+}
+
+// Smallest distance to `colour` over the panels' pixels.
+double ClosestInPanels(const Image& image, const ViewLayout& layout, Rgb colour) {
+  double best = 1e9;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (InAnyPanel(layout, x, y)) best = std::min(best, ColourDistance(image.At(x, y), colour));
+  return best;
+}
+
+double ClosestNear(const Image& image, const Eigen::Vector2d& p, int half, Rgb colour) {
+  double best = 1e9;
+  for (int dy = -half; dy <= half; ++dy)
+    for (int dx = -half; dx <= half; ++dx) {
+      const int x = static_cast<int>(p.x()) + dx, y = static_cast<int>(p.y()) + dy;
+      if (image.Contains(x, y)) best = std::min(best, ColourDistance(image.At(x, y), colour));
+    }
+  return best;
+}
+
+TEST(DeviationViews, RendersTheKnownCaseWithItsColourRange) {
+  const testing::SaggingCable cable;
+  Scene scene = cable.Build();
+  scene.title = "synthetic sagging cable";
+  scene.highlights.push_back({0, cable.peak_s - 0.05, cable.peak_s + 0.05});
+  const RenderOptions options;
+  const ViewLayout layout = PlanDeviationViews(scene, options);
+  const Image image = RenderDeviationViews(scene, options);
+  WritePng((cablefit::testing::FreshTempDir("render") / "deviation_views.png").string(), image);
+  ASSERT_EQ(image.width, 1600);
+  ASSERT_EQ(image.height, 1000);
+  ASSERT_EQ(layout.panels.size(), 3u);
+
+  // Not blank: the tubes cover a visible share of the panels.
+  long coloured = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (InAnyPanel(layout, x, y) && ColourDistance(image.At(x, y), Viridis(0.0)) < kColourTolerance) ++coloured;
+  EXPECT_GT(coloured, 2000);
+
+  // Range: the scale spans 0 .. peak, and both ends of the map show on the tube.
+  EXPECT_NEAR(layout.colour_scale.min, 0.0, 1e-12);
+  EXPECT_NEAR(layout.colour_scale.max, cable.peak_mm, 0.05);
+  EXPECT_LT(ClosestInPanels(image, layout, Viridis(0.0)), kColourTolerance);
+  EXPECT_LT(ClosestInPanels(image, layout, Viridis(1.0)), kColourTolerance);
+
+  // Where the peak projects, every panel shows the colour bar's top colour.
+  const Eigen::Vector3d peak = cable.Point(cable.peak_s / scene.tubes[0].centreline.s[scene.tubes[0].centreline.size() - 1]);
+  for (const auto& panel : layout.panels) {
+    const Eigen::Vector2d px = panel.camera.Project(peak);
+    EXPECT_LT(ClosestNear(image, px, 2, Viridis(1.0)), kColourTolerance)
+        << panel.camera.title << " at " << px.transpose();
+    // ... and the far end of the cable, where the deviation is ~0, the bottom colour.
+    const Eigen::Vector2d low = panel.camera.Project(cable.Point(0.08));
+    EXPECT_LT(ClosestNear(image, low, 2, Viridis(0.0)), kColourTolerance) << panel.camera.title;
+  }
+}
+
+TEST(DeviationViews, ChoosesTheViewsThatShowTheShape) {
+  // The cable spans X and sags in Z; its Y extent is small: front (X-Z) and top (X-Y) show
+  // most, the side view (along the cable) least.
+  const Scene scene = testing::SaggingCable{}.Build();
+  const ViewLayout layout = PlanDeviationViews(scene, RenderOptions{});
+  EXPECT_EQ(layout.panels[0].camera.title, "isometric");
+  EXPECT_EQ(layout.panels[1].camera.title.substr(0, 5), "front");
+  EXPECT_EQ(layout.panels[2].camera.title.substr(0, 3), "top");
+  // Auto-framing: every tube point lands inside its panel.
+  for (const auto& panel : layout.panels)
+    for (Eigen::Index i = 0; i < scene.tubes[0].centreline.size(); ++i) {
+      const Eigen::Vector2d p = panel.camera.Project(scene.tubes[0].centreline.points.col(i));
+      EXPECT_GT(p.x(), panel.camera.x);
+      EXPECT_LT(p.x(), panel.camera.x + panel.camera.width);
+      EXPECT_GT(p.y(), panel.camera.y);
+      EXPECT_LT(p.y(), panel.camera.y + panel.camera.height);
+    }
+}
+
+TEST(DeviationViews, AForcedRangeRecoloursTheTube) {
+  const testing::SaggingCable cable;
+  const Scene scene = cable.Build();
+  RenderOptions options;
+  options.colour_scale = ColourScale{0.0, 2.0 * cable.peak_mm, "deviation [mm]"};
+  const ViewLayout layout = PlanDeviationViews(scene, options);
+  const Image image = RenderDeviationViews(scene, options);
+  // The peak is now mid-scale: the top colour must not appear on the tube.
+  EXPECT_GT(ClosestInPanels(image, layout, Viridis(1.0)), 60.0);
+  const Eigen::Vector3d peak = cable.Point(cable.peak_s / scene.tubes[0].centreline.s[scene.tubes[0].centreline.size() - 1]);
+  EXPECT_LT(ClosestNear(image, layout.panels[1].camera.Project(peak), 2, Viridis(0.5)), kColourTolerance);
+}
+
+TEST(DeviationViews, SideBySideSharesOneColourScale) {
+  testing::SaggingCable small;
+  small.peak_mm = 5.0;
+  testing::SaggingCable large;
+  Scene baseline = small.Build();
+  baseline.title = "baseline";
+  Scene fitted = large.Build();
+  fitted.title = "fitted";
+  const RenderOptions options;
+  const ViewLayout layout = PlanSideBySide(baseline, fitted, options);
+  ASSERT_EQ(layout.panels.size(), 6u);
+  EXPECT_NEAR(layout.colour_scale.max, large.peak_mm, 0.05);
+  const Image image = RenderSideBySide(baseline, fitted, options);
+  WritePng((cablefit::testing::FreshTempDir("render") / "side_by_side.png").string(), image);
+  // Same framing in both rows; the baseline's 5 mm peak is a third of the way up the scale.
+  for (int col = 0; col < 3; ++col) {
+    const ViewCamera& a = layout.panels[static_cast<std::size_t>(col)].camera;
+    const ViewCamera& b = layout.panels[static_cast<std::size_t>(col + 3)].camera;
+    EXPECT_EQ(a.title, b.title);
+    EXPECT_DOUBLE_EQ(a.pixels_per_metre, b.pixels_per_metre);
+  }
+  const double u = large.peak_s / large.Build().tubes[0].centreline.s.tail(1)[0];
+  const ViewCamera& top_front = layout.panels[1].camera;
+  const ViewCamera& bottom_front = layout.panels[4].camera;
+  EXPECT_LT(ClosestNear(image, bottom_front.Project(large.Point(u)), 2, Viridis(1.0)), kColourTolerance);
+  EXPECT_LT(ClosestNear(image, top_front.Project(small.Point(u)), 2, Viridis(5.0 / 15.0)), kColourTolerance);
+  EXPECT_GT(ClosestNear(image, top_front.Project(small.Point(u)), 2, Viridis(1.0)), 60.0);
+}
+
+TEST(DeviationViews, RejectsBadInput) {
+  Scene scene = testing::SaggingCable{}.Build();
+  RenderOptions options;
+  options.width = 10;
+  EXPECT_THROW_WITH(RenderDeviationViews(scene, options), InvalidInput, "width");
+  scene.tubes[0].deviation.resize(3);
+  EXPECT_THROW_WITH(RenderDeviationViews(scene, RenderOptions{}), InvalidInput, "3 deviations");
+  scene = testing::SaggingCable{}.Build();
+  scene.tubes[0].radius = 0.0;
+  EXPECT_THROW_WITH(RenderDeviationViews(scene, RenderOptions{}), InvalidInput, "radius");
+}
+
+}  // namespace
+}  // namespace cablefit
