@@ -57,6 +57,69 @@ TEST(ForceDiagnosis, CombinesCurvesOfOneCase) {
   EXPECT_THROW_WITH(CombineForceDiagnoses({}), InvalidInput, "no force curves");
 }
 
+TEST(ForceDiagnosis, CaseWithSofterBendingAndNominalTorsionIsStiffness) {
+  RodSpec rod;
+  rod.length = 0.7;
+  rod.material.bending_stiffness = 0.012;
+  rod.material.torsional_stiffness = 0.009;
+  ForceTestSpec torsion;
+  torsion.type = ForceTestType::kClampedTorsion;
+  ForceCurve twist;
+  twist.x = (Eigen::VectorXd(7) << 0, 0.1, 0.2, 0.3, 0.2, 0.1, 0).finished();
+  twist.y = NominalForceCurve(rod, torsion, twist.x);
+  ForceTestSpec bending;
+  ForceCurve bend;
+  bend.x = (Eigen::VectorXd(9) << 0.01, 0.015, 0.02, 0.025, 0.03, 0.025, 0.02, 0.015, 0.01)
+               .finished();
+  bend.y = 0.7 * NominalForceCurve(rod, bending, bend.x);
+  // Deterministic +-0.5 % "noise" so the criterion sees a finite residual.
+  for (Eigen::Index i = 0; i < bend.y.size(); ++i) bend.y[i] *= 1.0 + 0.005 * std::sin(3.0 * i);
+  for (Eigen::Index i = 0; i < twist.y.size(); ++i) {
+    twist.y[i] += 0.005 * 0.009 * 0.3 / 0.7 * std::cos(2.0 * i);
+  }
+  const ForceDiagnosis dt = DiagnoseForceCurve(rod, torsion, twist, {}, "torsion.csv");
+  const ForceDiagnosis db = DiagnoseForceCurve(rod, bending, bend, {}, "bending.csv");
+  EXPECT_EQ(dt.effect, ForceEffect::kNone);
+  EXPECT_EQ(db.effect, ForceEffect::kStiffness);
+  const ForceCaseDiagnosis c = CombineForceDiagnoses({dt, db});
+  EXPECT_EQ(c.effect, ForceEffect::kStiffness);
+  EXPECT_EQ(c.strongest_curve, 1);
+  EXPECT_NEAR(c.parameters.at("ratio"), 0.7, 0.01);
+  ASSERT_EQ(c.curves.size(), 2u);
+  EXPECT_EQ(c.curves[0].effect, ForceEffect::kStiffness);  // re-expressed with the case effect
+  EXPECT_NEAR(c.curves[0].parameters.at("ratio"), 1.0, 0.02);
+  EXPECT_NE(c.explanation.find("bending.csv"), std::string::npos);
+  EXPECT_NE(c.explanation.find("lower than nominal"), std::string::npos);
+  EXPECT_GE(c.baseline.max_deviation, db.baseline.max_deviation);
+  EXPECT_LT(c.fitted.max_deviation, 0.1 * c.baseline.max_deviation);
+}
+
+TEST(ForceDiagnosis, RecoversNoiseFreeIwanLoopAndStiffness) {
+  RodSpec rod;
+  rod.length = 0.5;
+  rod.material.torsional_stiffness = 0.01;
+  ForceTestSpec torsion;
+  torsion.type = ForceTestType::kClampedTorsion;
+  ForceCurve curve;
+  std::vector<double> xs;
+  for (int cycle = 0; cycle < 2; ++cycle) {
+    for (int i = 0; i <= 8; ++i) xs.push_back(0.04 * i);
+    for (int i = 7; i >= 0; --i) xs.push_back(0.04 * i);
+  }
+  curve.x = Eigen::Map<Eigen::VectorXd>(xs.data(), static_cast<Eigen::Index>(xs.size()));
+  const std::vector<JenkinsElement> elements = {{0.05, 0.0004}, {0.02, 0.0006}};
+  const Eigen::VectorXd clean =
+      1.2 * NominalForceCurve(rod, torsion, curve.x) + IwanResponse(elements, curve.x);
+  curve.y = clean;
+  const ForceDiagnosis d = DiagnoseForceCurve(rod, torsion, curve);
+  EXPECT_EQ(d.effect, ForceEffect::kHysteresis);
+  EXPECT_NEAR(d.parameters.at("ratio"), 1.2, 0.02);
+  EXPECT_NEAR(d.parameters.at("loop_area"), FirstCycleLoopArea(curve.x, clean),
+              0.03 * FirstCycleLoopArea(curve.x, clean));
+  EXPECT_NEAR(d.parameters.at("slip_force_total"), 0.001, 1e-4);
+  EXPECT_LT(d.fitted.max_deviation, 0.05 * d.baseline.max_deviation);
+}
+
 class ForceDiagnosisBadInput : public ::testing::Test {
  protected:
   void SetUp() override {
