@@ -29,6 +29,8 @@ struct SupportSpec {
   /// Compliant clamp: rotation = compliance * moment, 3x3 in the clamp frame (d1, d2, d3)
   /// [rad/(N m)]. Absent = rigid. Only meaningful for kClamp.
   std::optional<Mat3> compliance;
+  /// Sliding support: free translation along its tangent (clamp or clip only).
+  bool sliding = false;
 };
 
 /// A natural (intrinsic) curvature/twist over [s_start, s_end], switched on and off by smooth

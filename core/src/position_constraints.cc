@@ -1,0 +1,68 @@
+// Position constraints of the supports: c_k = P_k (r(node_k) - p_k) = 0, where node positions are
+// prefix sums of h_j d3_j from the anchor support. P_k is the identity, or the two directions
+// across the support's axis for a sliding support.
+#include "quaternion.h"
+#include "rod_energy.h"
+
+namespace cablefit {
+
+Eigen::Matrix<double, Eigen::Dynamic, 3> ConstraintProjector(const RodSupport& support,
+                                                             const RodState& state, int k) {
+  if (!support.sliding) return Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d r = quat::ToMatrix(state.support_q[k]);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> p(2, 3);
+  p.row(0) = r.col(0).transpose();
+  p.row(1) = r.col(1).transpose();
+  return p;
+}
+
+void EvaluatePositionConstraints(const RodModel& model, const RodState& state, Eigen::VectorXd* c,
+                                 Eigen::MatrixXd* jacobian) {
+  const int m = model.num_constraints;
+  const int n = static_cast<int>(model.items.size());
+  c->setZero(m);
+  if (jacobian) jacobian->setZero(m, 3 * n);
+  const Eigen::Matrix3Xd r = state.NodePositions(model);
+  const Eigen::Matrix3d e3x = quat::Skew(Vec3::UnitZ());
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const RodSupport& sp = model.supports[k];
+    if (sp.constraint_row < 0) continue;
+    const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
+    c->segment(sp.constraint_row, sp.constraint_rows) =
+        p * (r.col(sp.node) - state.support_position[k]);
+    if (!jacobian) continue;
+    const int lo = std::min(sp.node, model.anchor_node), hi = std::max(sp.node, model.anchor_node);
+    for (int j = lo; j < hi; ++j) {
+      const double sign = model.Sign(sp.node, j);
+      const int item = model.element_item[j];
+      jacobian->block(sp.constraint_row, 3 * item, sp.constraint_rows, 3) =
+          -sign * model.element_length[j] * p * quat::ToMatrix(state.q[item]) * e3x;
+    }
+  }
+}
+
+void AddConstraintCurvature(const RodModel& model, const RodState& state,
+                            const Eigen::VectorXd& lambda, BlockTridiagonal* hessian) {
+  if (model.num_constraints == 0) return;
+  std::vector<Vec3> a(model.num_elements, Vec3::Zero());
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const RodSupport& sp = model.supports[k];
+    if (sp.constraint_row < 0) continue;
+    const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
+    const Vec3 force = p.transpose() * lambda.segment(sp.constraint_row, sp.constraint_rows);
+    const int lo = std::min(sp.node, model.anchor_node), hi = std::max(sp.node, model.anchor_node);
+    for (int j = lo; j < hi; ++j) a[j] += model.Sign(sp.node, j) * model.element_length[j] * force;
+  }
+  for (int j = 0; j < model.num_elements; ++j) {
+    if (a[j].squaredNorm() == 0.0) continue;
+    const int item = model.element_item[j];
+    const Eigen::Matrix3d r = quat::ToMatrix(state.q[item]);
+    const Vec3 at = r.transpose() * a[j];
+    Eigen::Matrix3d h = -at[2] * Eigen::Matrix3d::Identity();
+    h.col(2) += 0.5 * at;
+    h.row(2) += 0.5 * at.transpose();
+    hessian->Diag(item) += h;
+  }
+}
+
+}  // namespace cablefit

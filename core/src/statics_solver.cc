@@ -1,0 +1,395 @@
+#include "cablefit/core/statics_solver.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "block_tridiagonal.h"
+#include "cablefit/core/errors.h"
+#include "quaternion.h"
+#include "rod_energy.h"
+#include "support_targets.h"
+
+namespace cablefit {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Evaluation {
+  double energy = 0.0;
+  Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
+  Eigen::VectorXd c;
+  Eigen::MatrixXd jac;
+  BlockTridiagonal hessian;
+};
+
+std::vector<char> FreeMask(const RodModel& model) {
+  std::vector<char> free(3 * model.items.size(), 1);
+  for (size_t i = 0; i < model.items.size(); ++i)
+    for (int d = 0; d < 3; ++d)
+      if (model.items[i].masked[d]) free[3 * i + d] = 0;
+  return free;
+}
+
+void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
+              const Eigen::VectorXd* lambda, const std::vector<char>& free, Evaluation* ev) {
+  EnergyAccumulator acc;
+  const int n = static_cast<int>(model.items.size());
+  acc.Reset(n, with_hessian ? &ev->hessian : nullptr);
+  AddBendingEnergy(model, state, &acc);
+  AddLoadEnergy(model, state, &acc);
+  AddSupportSpringEnergy(model, state, &acc);
+  ev->energy = acc.value;
+  ev->gradient = acc.gradient;
+  for (int k = 0; k < 3 * n; ++k)
+    if (!free[k]) ev->gradient[k] = 0.0;
+  EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
+  for (int k = 0; k < 3 * n; ++k)
+    if (!free[k]) ev->jac.col(k).setZero();
+  if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
+}
+
+double Merit(const RodModel& model, const RodState& state, double nu, const std::vector<char>& free) {
+  Evaluation ev;
+  Evaluate(model, state, false, nullptr, free, &ev);
+  return ev.energy + nu * ev.c.lpNorm<1>();
+}
+
+// Replaces masked rows/columns by the identity so the chain keeps one uniform block structure.
+void MaskHessian(const std::vector<char>& free, BlockTridiagonal* h) {
+  const int n = h->size();
+  for (int i = 0; i < n; ++i)
+    for (int d = 0; d < 3; ++d) {
+      if (free[3 * i + d]) continue;
+      h->Diag(i).row(d).setZero();
+      h->Diag(i).col(d).setZero();
+      h->Diag(i)(d, d) = 1.0;
+      if (i + 1 < n) h->Upper(i).row(d).setZero();
+      if (i > 0) h->Upper(i - 1).col(d).setZero();
+    }
+}
+
+void ShiftFree(const std::vector<char>& free, double mu, BlockTridiagonal* h) {
+  for (int i = 0; i < h->size(); ++i)
+    for (int d = 0; d < 3; ++d)
+      if (free[3 * i + d]) h->Diag(i)(d, d) += mu;
+}
+
+void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha, RodState* state) {
+  for (size_t i = 0; i < model.items.size(); ++i) {
+    const Eigen::Vector3d th = alpha * step.segment<3>(3 * i);
+    if (th.squaredNorm() == 0.0) continue;
+    state->q[i] = quat::Multiply(state->q[i], quat::Exp(th)).normalized();
+  }
+  AlignQuaternionSigns(state);
+}
+
+// Inertia of the KKT matrix [H C^T; C 0] = inertia(H) + inertia(-C H^-1 C^T): the reduced
+// Hessian is positive definite iff H has as many negative eigenvalues as S = C H^-1 C^T has
+// positive ones missing, i.e. neg(H) + pos(S) == m.
+struct KktSolve {
+  bool ok = false;
+  int negative_directions = 0;
+  double min_pivot = 0.0;
+  Eigen::VectorXd step;    // 3n
+  Eigen::VectorXd lambda;  // m
+};
+
+KktSolve SolveKkt(const BlockTridiagonal& h_masked, const Evaluation& ev,
+                  const std::vector<char>& free, double mu) {
+  KktSolve out;
+  BlockTridiagonal h = h_masked;
+  if (mu != 0.0) ShiftFree(free, mu, &h);
+  BlockTridiagonalLdlt ldlt;
+  const bool factored = ldlt.Factorize(h, 0.0);
+  out.min_pivot = ldlt.MinPivotEigenvalue();
+  if (!factored) return out;
+  const int m = static_cast<int>(ev.c.size());
+  const int n3 = static_cast<int>(ev.gradient.size());
+  Eigen::MatrixXd rhs(n3, 1 + m);
+  rhs.col(0) = ev.gradient;
+  if (m > 0) rhs.rightCols(m) = ev.jac.transpose();
+  ldlt.SolveInPlace(rhs);
+  int neg = ldlt.NegativeCount();
+  if (m > 0) {
+    const Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (s + s.transpose()));
+    const double scale = std::max(1e-300, eig.eigenvalues().cwiseAbs().maxCoeff());
+    int pos = 0;
+    for (int k = 0; k < m; ++k) {
+      const double e = eig.eigenvalues()[k];
+      if (std::abs(e) <= 1e-13 * scale) return out;  // rank-deficient constraints
+      if (e > 0) ++pos;
+    }
+    neg += pos - m;
+    out.lambda = eig.eigenvectors() *
+                 (eig.eigenvalues().cwiseInverse().asDiagonal() *
+                  (eig.eigenvectors().transpose() * (ev.c - ev.jac * rhs.col(0))));
+    out.step = -(rhs.col(0) + rhs.rightCols(m) * out.lambda);
+  } else {
+    out.lambda.resize(0);
+    out.step = -rhs.col(0);
+  }
+  out.negative_directions = neg;
+  out.ok = true;
+  return out;
+}
+
+double HessianScale(const BlockTridiagonal& h) {
+  double s = 0.0;
+  for (int i = 0; i < h.size(); ++i) s = std::max(s, h.Diag(i).diagonal().cwiseAbs().maxCoeff());
+  return std::max(s, 1e-300);
+}
+
+}  // namespace
+
+KktEvaluation EvaluateKkt(const RodModel& model, const RodState& state,
+                          const Eigen::VectorXd& lambda, bool dense_hessian) {
+  std::vector<char> all_free(3 * model.items.size(), 1);
+  Evaluation ev;
+  Evaluate(model, state, dense_hessian, &lambda, all_free, &ev);
+  KktEvaluation out;
+  out.energy = ev.energy;
+  out.gradient = ev.gradient;
+  out.constraints = ev.c;
+  out.jacobian = ev.jac;
+  if (dense_hessian) {
+    const int n = ev.hessian.size();
+    out.hessian = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+    for (int i = 0; i < n; ++i) {
+      out.hessian.block<3, 3>(3 * i, 3 * i) = ev.hessian.Diag(i);
+      if (i + 1 < n) {
+        out.hessian.block<3, 3>(3 * i, 3 * i + 3) = ev.hessian.Upper(i);
+        out.hessian.block<3, 3>(3 * i + 3, 3 * i) = ev.hessian.Upper(i).transpose();
+      }
+    }
+  }
+  return out;
+}
+
+void RotateFrames(const RodModel& model, const Eigen::VectorXd& theta, RodState* state) {
+  ApplyStep(model, theta, 1.0, state);
+}
+
+bool StaticsOptions::IsValid(std::string* why) const {
+  auto fail = [why](const char* msg) {
+    if (why) *why = msg;
+    return false;
+  };
+  if (max_iterations < 1) return fail("max_iterations must be >= 1");
+  if (!(gradient_tolerance > 0)) return fail("gradient_tolerance must be > 0");
+  if (!(constraint_tolerance > 0)) return fail("constraint_tolerance must be > 0");
+  if (!(max_step_rotation > 0)) return fail("max_step_rotation must be > 0");
+  if (max_continuation_steps < 0) return fail("max_continuation_steps must be >= 0");
+  return true;
+}
+
+const char* ToString(TerminationType t) {
+  switch (t) {
+    case TerminationType::kConverged: return "converged";
+    case TerminationType::kNoConvergence: return "no_convergence";
+    case TerminationType::kLineSearchFailure: return "line_search_failure";
+    case TerminationType::kCancelled: return "cancelled";
+  }
+  return "?";
+}
+
+std::string StaticsSummary::BriefReport() const {
+  std::ostringstream os;
+  os << ToString(termination) << ": " << iterations << " Newton iterations, "
+     << continuation_steps << " continuation steps, |grad| " << gradient_norm << " N m, |c| "
+     << constraint_norm << " m, energy " << final_energy << " J, "
+     << (stable ? "stable" : "UNSTABLE") << ", " << seconds * 1e3 << " ms";
+  if (!message.empty()) os << " (" << message << ")";
+  return os.str();
+}
+
+StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
+                                  const StaticsOptions& options) {
+  const auto t0 = Clock::now();
+  StaticsSummary sum;
+  const std::vector<char> free = FreeMask(model);
+  const double L = model.spec.length;
+  const double gtol = options.gradient_tolerance * model.force_scale * L;
+  const double ctol = options.constraint_tolerance * L;
+  if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
+  ApplySupportTargets(model, state);
+  Evaluation ev;
+  double nu = 0.0;
+  bool first = true;
+  for (int iter = 0;; ++iter) {
+    Evaluate(model, *state, true, &state->lambda, free, &ev);
+    if (first) {
+      sum.initial_energy = ev.energy;
+      first = false;
+    }
+    const Eigen::VectorXd grad_l =
+        model.num_constraints > 0 ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * state->lambda)
+                                  : ev.gradient;
+    sum.gradient_norm = grad_l.lpNorm<Eigen::Infinity>();
+    sum.constraint_norm = ev.c.size() ? ev.c.lpNorm<Eigen::Infinity>() : 0.0;
+    sum.final_energy = ev.energy;
+    sum.iterations = iter;
+    if (sum.gradient_norm <= gtol && sum.constraint_norm <= ctol) {
+      sum.termination = TerminationType::kConverged;
+      break;
+    }
+    if (iter >= options.max_iterations) {
+      sum.termination = TerminationType::kNoConvergence;
+      sum.message = "iteration limit";
+      break;
+    }
+    MaskHessian(free, &ev.hessian);
+    const double scale = HessianScale(ev.hessian);
+    KktSolve kkt;
+    for (double mu = 0.0;;) {
+      kkt = SolveKkt(ev.hessian, ev, free, mu);
+      if (kkt.ok && kkt.negative_directions == 0) break;
+      mu = mu == 0.0 ? 1e-8 * scale : 10.0 * mu;
+      if (mu > 1e6 * scale) {
+        kkt.ok = false;
+        break;
+      }
+    }
+    if (!kkt.ok) {
+      sum.termination = TerminationType::kLineSearchFailure;
+      sum.message = "KKT system singular (supports over-constrain the cable?)";
+      break;
+    }
+    // Limit the largest frame rotation of one step.
+    double max_rot = 0.0;
+    for (size_t i = 0; i < model.items.size(); ++i)
+      max_rot = std::max(max_rot, kkt.step.segment<3>(3 * i).norm());
+    Eigen::VectorXd step = kkt.step;
+    if (max_rot > options.max_step_rotation) step *= options.max_step_rotation / max_rot;
+    const double step_norm = step.lpNorm<Eigen::Infinity>();
+    if (step_norm < 1e-15 && sum.constraint_norm <= ctol) {
+      sum.termination = TerminationType::kConverged;
+      sum.message = "step below round-off";
+      break;
+    }
+    nu = std::max(nu, 1.5 * (kkt.lambda.size() ? kkt.lambda.lpNorm<Eigen::Infinity>() : 0.0) +
+                          1e-12 * model.force_scale);
+    const double c1 = ev.c.size() ? ev.c.lpNorm<1>() : 0.0;
+    const double phi0 = ev.energy + nu * c1;
+    const double slope = ev.gradient.dot(step) - nu * c1;
+    const RodState start = *state;
+    const double kkt0 = std::max(sum.gradient_norm / gtol, sum.constraint_norm / ctol);
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
+      *state = start;
+      ApplyStep(model, step, alpha, state);
+      const double phi = Merit(model, *state, nu, free);
+      if (phi <= phi0 + 1e-4 * alpha * std::min(slope, 0.0) + 1e-14 * std::abs(phi0)) {
+        accepted = true;
+        break;
+      }
+      if (ls == 0) {
+        // Near the solution the merit can reject good Newton steps (Maratos effect): accept a
+        // full step that reduces the KKT residual markedly.
+        Evaluation trial;
+        Evaluate(model, *state, false, nullptr, free, &trial);
+        const Eigen::VectorXd gl = model.num_constraints > 0
+                                       ? Eigen::VectorXd(trial.gradient + trial.jac.transpose() * kkt.lambda)
+                                       : trial.gradient;
+        const double kkt1 = std::max(gl.lpNorm<Eigen::Infinity>() / gtol,
+                                     (trial.c.size() ? trial.c.lpNorm<Eigen::Infinity>() : 0.0) / ctol);
+        if (kkt1 < 0.5 * kkt0) {
+          accepted = true;
+          break;
+        }
+      }
+    }
+    if (!accepted) {
+      *state = start;
+      sum.termination = TerminationType::kLineSearchFailure;
+      sum.message = "no step decreased the merit function";
+      break;
+    }
+    state->lambda = kkt.lambda;
+  }
+  if (sum.converged()) EvaluateStability(model, *state, &sum);
+  sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+void EvaluateStability(const RodModel& model, const RodState& state, StaticsSummary* summary) {
+  const std::vector<char> free = FreeMask(model);
+  Evaluation ev;
+  Evaluate(model, state, true, &state.lambda, free, &ev);
+  MaskHessian(free, &ev.hessian);
+  KktSolve kkt = SolveKkt(ev.hessian, ev, free, 0.0);
+  summary->min_pivot = kkt.min_pivot;
+  summary->stable = kkt.ok && kkt.negative_directions == 0;
+  summary->negative_directions = kkt.ok ? kkt.negative_directions : -1;
+}
+
+StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options) {
+  const auto t0 = Clock::now();
+  std::string why;
+  CABLEFIT_CHECK(options.IsValid(&why), why);
+  const RodState start = *state;
+  RodState direct = start;
+  SetSupportTargets(model, 1.0, start, &direct);
+  direct.load_factor = 1.0;
+  direct.natural_factor = 1.0;
+  StaticsSummary sum = SolveStaticsDirect(model, &direct, options);
+  int total_iterations = sum.iterations;
+  if (sum.converged()) {
+    *state = direct;
+    sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return sum;
+  }
+  // Continuation from the start state's own poses (and, if asked, from zero load).
+  RodState cur = start;
+  double t = 0.0, dt = 0.25;
+  int steps = 0;
+  bool at_start = true;
+  while (true) {
+    if (steps >= options.max_continuation_steps || dt < 1e-4) {
+      sum.termination = TerminationType::kNoConvergence;
+      sum.message = "continuation stalled at t=" + std::to_string(t);
+      break;
+    }
+    const double t_next = at_start ? 0.0 : std::min(1.0, t + dt);
+    RodState trial = cur;
+    SetSupportTargets(model, t_next, start, &trial);
+    trial.load_factor = options.ramp_loads ? t_next : 1.0;
+    trial.natural_factor = options.ramp_loads ? t_next : 1.0;
+    StaticsSummary step = SolveStaticsDirect(model, &trial, options);
+    total_iterations += step.iterations;
+    ++steps;
+    if (options.progress && !options.progress(t_next, "continuation")) {
+      sum.termination = TerminationType::kCancelled;
+      sum.message = "cancelled";
+      break;
+    }
+    if (step.converged()) {
+      cur = trial;
+      t = t_next;
+      at_start = false;
+      if (t >= 1.0) {
+        sum = step;
+        *state = cur;
+        break;
+      }
+      if (step.iterations <= 6) dt = std::min(0.5, dt * 1.5);
+    } else {
+      if (at_start) {
+        sum = step;
+        sum.message = "could not relax the initial shape: " + step.message;
+        break;
+      }
+      dt *= 0.5;
+    }
+  }
+  sum.continuation_steps = steps;
+  sum.iterations = total_iterations;
+  sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+}  // namespace cablefit
