@@ -66,19 +66,18 @@ std::string Explain(const ForceDiagnosis& d, const ForceCandidate& c) {
   const double ratio = c.effect == ForceEffect::kNone ? 1.0 : param("ratio");
   if (c.effect == ForceEffect::kNone) {
     s << "the recorded curve matches the nominal model within its noise (max deviation "
-      << Num(d.baseline.max_deviation) << " " << d.y_unit << ", noise about "
-      << Num(d.noise_sigma) << " " << d.y_unit << "); no effect is needed";
+      << Num(d.baseline.max_deviation) << " " << d.y_unit << ", noise about " << Num(d.noise_sigma)
+      << " " << d.y_unit << "); no effect is needed";
   } else if (c.effect == ForceEffect::kStiffness) {
     const double pct = std::round(std::abs(ratio - 1.0) * 100.0);
     s << "the " << what << " stiffness is " << Fixed(pct, 0) << " % "
-      << (ratio < 1.0 ? "lower" : "higher") << " than nominal (ratio " << Fixed(ratio, 2)
-      << "); " << reduces;
+      << (ratio < 1.0 ? "lower" : "higher") << " than nominal (ratio " << Fixed(ratio, 2) << "); "
+      << reduces;
   } else {
-    s << "loading and unloading paths differ: a friction (Iwan) model with "
-      << c.elements.size() << " slip element(s), total slip " << measure << " "
-      << Num(param("slip_force_total")) << " " << d.y_unit
-      << ", encloses a first-cycle loop of " << Num(param("loop_area")) << " " << d.y_unit
-      << "*" << d.x_unit << " (recorded " << Num(param("recorded_loop_area")) << ")";
+    s << "loading and unloading paths differ: a friction (Iwan) model with " << c.elements.size()
+      << " slip element(s), total slip " << measure << " " << Num(param("slip_force_total")) << " "
+      << d.y_unit << ", encloses a first-cycle loop of " << Num(param("loop_area")) << " "
+      << d.y_unit << "*" << d.x_unit << " (recorded " << Num(param("recorded_loop_area")) << ")";
     if (std::abs(ratio - 1.0) >= 0.05) {
       s << " on top of a " << what << " stiffness ratio of " << Fixed(ratio, 2);
     }
@@ -118,9 +117,12 @@ void Choose(const ForceDiagnosis& base, const ForceCandidate& c, const Eigen::Ve
 
 const char* ToString(ForceEffect effect) {
   switch (effect) {
-    case ForceEffect::kNone: return "none";
-    case ForceEffect::kStiffness: return "stiffness";
-    case ForceEffect::kHysteresis: return "hysteresis";
+    case ForceEffect::kNone:
+      return "none";
+    case ForceEffect::kStiffness:
+      return "stiffness";
+    case ForceEffect::kHysteresis:
+      return "hysteresis";
   }
   return "none";
 }
@@ -199,10 +201,9 @@ ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& t
   }
   const std::vector<double> scores = Scores(criteria);
   for (size_t i = 0; i < scores.size(); ++i) base.candidates[i].score = scores[i];
-  std::stable_sort(base.candidates.begin(), base.candidates.end(),
-                   [](const ForceCandidate& a, const ForceCandidate& b) {
-                     return a.criterion < b.criterion;
-                   });
+  std::stable_sort(
+      base.candidates.begin(), base.candidates.end(),
+      [](const ForceCandidate& a, const ForceCandidate& b) { return a.criterion < b.criterion; });
   ForceDiagnosis out;
   Choose(base, base.candidates.front(), curve.y, &out);
   return out;
@@ -251,8 +252,8 @@ ForceCaseDiagnosis CombineForceDiagnoses(const std::vector<ForceDiagnosis>& curv
   out.fitted.rms_deviation = std::sqrt(sum_sq_fit / rows);
   const ForceDiagnosis& strongest = out.curves[static_cast<size_t>(out.strongest_curve)];
   out.parameters = strongest.parameters;
-  out.explanation = (strongest.file.empty() ? std::string() : strongest.file + ": ") +
-                    strongest.explanation;
+  out.explanation =
+      (strongest.file.empty() ? std::string() : strongest.file + ": ") + strongest.explanation;
   if (curves.size() > 1) {
     out.explanation += " (" + std::to_string(curves.size()) + " curves combined)";
   }

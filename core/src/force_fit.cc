@@ -13,9 +13,12 @@ namespace {
 
 int ComplexityRank(ForceEffect effect) {
   switch (effect) {
-    case ForceEffect::kNone: return 0;
-    case ForceEffect::kStiffness: return 1;
-    case ForceEffect::kHysteresis: return 2;
+    case ForceEffect::kNone:
+      return 0;
+    case ForceEffect::kStiffness:
+      return 1;
+    case ForceEffect::kHysteresis:
+      return 2;
   }
   return 0;
 }

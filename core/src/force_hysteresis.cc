@@ -22,8 +22,8 @@ Eigen::VectorXd UnitJenkinsResponse(double slip_displacement, const Eigen::Vecto
   return z;
 }
 
-Eigen::VectorXd IwanResponse(const std::vector<JenkinsElement>& elements,
-                             const Eigen::VectorXd& x, double x_start) {
+Eigen::VectorXd IwanResponse(const std::vector<JenkinsElement>& elements, const Eigen::VectorXd& x,
+                             double x_start) {
   Eigen::VectorXd total = Eigen::VectorXd::Zero(x.size());
   for (const JenkinsElement& e : elements) {
     if (e.slip_force <= 0.0) continue;

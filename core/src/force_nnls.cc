@@ -23,8 +23,8 @@ Eigen::VectorXd Nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
   const Eigen::Index n = A.cols();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   std::vector<bool> passive(static_cast<size_t>(n), false);
-  const double tol = 1e3 * std::numeric_limits<double>::epsilon() *
-                     std::max(1.0, b.norm()) * std::max<double>(1.0, static_cast<double>(n));
+  const double tol = 1e3 * std::numeric_limits<double>::epsilon() * std::max(1.0, b.norm()) *
+                     std::max<double>(1.0, static_cast<double>(n));
   const int max_outer = 3 * static_cast<int>(n) + 10;
   for (int outer = 0; outer < max_outer; ++outer) {
     const Eigen::VectorXd w = A.transpose() * (b - A * x);
@@ -91,9 +91,11 @@ Eigen::VectorXd SolvePartlyNonNegativeLeastSquares(const Eigen::MatrixXd& A,
     (nonnegative[static_cast<size_t>(j)] ? nn_cols : free_cols).push_back(static_cast<int>(j));
   }
   Eigen::MatrixXd Af(A.rows(), static_cast<Eigen::Index>(free_cols.size()));
-  for (size_t i = 0; i < free_cols.size(); ++i) Af.col(static_cast<Eigen::Index>(i)) = An.col(free_cols[i]);
+  for (size_t i = 0; i < free_cols.size(); ++i)
+    Af.col(static_cast<Eigen::Index>(i)) = An.col(free_cols[i]);
   Eigen::MatrixXd Ac(A.rows(), static_cast<Eigen::Index>(nn_cols.size()));
-  for (size_t i = 0; i < nn_cols.size(); ++i) Ac.col(static_cast<Eigen::Index>(i)) = An.col(nn_cols[i]);
+  for (size_t i = 0; i < nn_cols.size(); ++i)
+    Ac.col(static_cast<Eigen::Index>(i)) = An.col(nn_cols[i]);
 
   Eigen::VectorXd xc = Eigen::VectorXd::Zero(Ac.cols());
   Eigen::VectorXd xf = Eigen::VectorXd::Zero(Af.cols());

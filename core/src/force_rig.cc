@@ -21,9 +21,8 @@ double ElasticaModulus(double length, double shortening) {
   }
   if (!std::isfinite(shortening) || shortening < 0.0 || shortening >= length) {
     std::ostringstream msg;
-    msg << "pinned_bending: displacement " << shortening
-        << " m is outside the geometric range [0, " << length
-        << ") m (the roller would pass the pinned end)";
+    msg << "pinned_bending: displacement " << shortening << " m is outside the geometric range [0, "
+        << length << ") m (the roller would pass the pinned end)";
     throw InvalidInput(msg.str());
   }
   if (shortening == 0.0) return 0.0;

@@ -117,10 +117,11 @@ TEST(ForceCorpus, ConfusionMatrixOnGeneratedCurves) {
         worst_area_err = std::max(worst_area_err, err);
         area_ok += err <= 0.15;
         if (err > 0.15 || std::getenv("FORCE_CORPUS_VERBOSE") != nullptr) {
-          std::printf("  loop area off by %.2f: %s, %ld rows, truth %.3g fitted %.3g "
-                      "elements %zu\n", err, torsion ? "torsion" : "bending",
-                      static_cast<long>(s.curve.x.size()), s.loop_area,
-                      d.parameters.at("loop_area"), d.elements.size());
+          std::printf(
+              "  loop area off by %.2f: %s, %ld rows, truth %.3g fitted %.3g "
+              "elements %zu\n",
+              err, torsion ? "torsion" : "bending", static_cast<long>(s.curve.x.size()),
+              s.loop_area, d.parameters.at("loop_area"), d.elements.size());
         }
         ++area_n;
       }
@@ -128,13 +129,13 @@ TEST(ForceCorpus, ConfusionMatrixOnGeneratedCurves) {
   }
   std::printf("force corpus confusion (rows truth, cols diagnosed: none stiffness hysteresis)\n");
   for (int e = 0; e < 3; ++e) {
-    std::printf("  %-10s %4d %4d %4d\n", ToString(effects[static_cast<size_t>(e)]),
-                confusion[e][0], confusion[e][1], confusion[e][2]);
+    std::printf("  %-10s %4d %4d %4d\n", ToString(effects[static_cast<size_t>(e)]), confusion[e][0],
+                confusion[e][1], confusion[e][2]);
   }
-  std::printf("  correct %d / %d; ratio within 15 %%: %d / %d (worst %.3f); loop area within "
-              "15 %%: %d / %d (worst %.3f)\n",
-              correct, total, ratio_ok, ratio_n, worst_ratio_err, area_ok, area_n,
-              worst_area_err);
+  std::printf(
+      "  correct %d / %d; ratio within 15 %%: %d / %d (worst %.3f); loop area within "
+      "15 %%: %d / %d (worst %.3f)\n",
+      correct, total, ratio_ok, ratio_n, worst_ratio_err, area_ok, area_n, worst_area_err);
   EXPECT_GE(correct, static_cast<int>(std::ceil(0.95 * total)));
   EXPECT_EQ(confusion[0][1] + confusion[0][2], 0) << "false positives on none";
   EXPECT_EQ(ratio_ok, ratio_n);

@@ -19,8 +19,8 @@ TEST(ForceDiagnosis, IdentifiesPublicCases) {
   ASSERT_GE(cases.size(), 3u);
   for (const auto& c : cases) {
     const ForceDiagnosis d = DiagnoseForceCurve(c.rod, c.test, c.curve, {}, c.file);
-    std::cout << c.name << ": " << ToString(d.effect) << " (confidence " << d.confidence
-              << ") — " << d.explanation << "\n";
+    std::cout << c.name << ": " << ToString(d.effect) << " (confidence " << d.confidence << ") — "
+              << d.explanation << "\n";
     for (const auto& cand : d.candidates) {
       std::cout << "   " << ToString(cand.effect) << " score " << cand.score << " criterion "
                 << cand.criterion << " p " << cand.parameter_count << "\n";
@@ -69,8 +69,8 @@ TEST(ForceDiagnosis, CaseWithSofterBendingAndNominalTorsionIsStiffness) {
   twist.y = NominalForceCurve(rod, torsion, twist.x);
   ForceTestSpec bending;
   ForceCurve bend;
-  bend.x = (Eigen::VectorXd(9) << 0.01, 0.015, 0.02, 0.025, 0.03, 0.025, 0.02, 0.015, 0.01)
-               .finished();
+  bend.x =
+      (Eigen::VectorXd(9) << 0.01, 0.015, 0.02, 0.025, 0.03, 0.025, 0.02, 0.015, 0.01).finished();
   bend.y = 0.7 * NominalForceCurve(rod, bending, bend.x);
   // Deterministic +-0.5 % "noise" so the criterion sees a finite residual.
   for (Eigen::Index i = 0; i < bend.y.size(); ++i) bend.y[i] *= 1.0 + 0.005 * std::sin(3.0 * i);

@@ -73,8 +73,10 @@ TEST(ForceNnls, KktConditionsHoldOnRandomProblem) {
   EXPECT_NEAR(grad[0], 0.0, 1e-10);
   for (int j = 1; j < 8; ++j) {
     EXPECT_GE(x[j], 0.0);
-    if (x[j] > 0.0) EXPECT_NEAR(grad[j], 0.0, 1e-10);
-    else EXPECT_GE(grad[j], -1e-10);
+    if (x[j] > 0.0)
+      EXPECT_NEAR(grad[j], 0.0, 1e-10);
+    else
+      EXPECT_GE(grad[j], -1e-10);
   }
 }
 

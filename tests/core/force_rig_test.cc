@@ -84,8 +84,8 @@ TEST(ForceRig, NominalRejectsBadStiffness) {
   RodSpec rod;
   rod.length = 0.5;
   ForceTestSpec test;
-  EXPECT_THROW_WITH(NominalForceCurve(rod, test, Eigen::VectorXd::Constant(3, 0.01)),
-                    InvalidInput, "bending_stiffness");
+  EXPECT_THROW_WITH(NominalForceCurve(rod, test, Eigen::VectorXd::Constant(3, 0.01)), InvalidInput,
+                    "bending_stiffness");
 }
 
 }  // namespace

@@ -62,7 +62,8 @@ inline std::vector<double> JsonArray(const std::string& text, const std::string&
     if (end == text.c_str() + pos) break;
     out.push_back(d);
     pos = static_cast<size_t>(end - text.c_str());
-    while (pos < close && (text[pos] == ',' || std::isspace(static_cast<unsigned char>(text[pos])))) ++pos;
+    while (pos < close && (text[pos] == ',' || std::isspace(static_cast<unsigned char>(text[pos]))))
+      ++pos;
   }
   return out;
 }
@@ -125,8 +126,8 @@ inline std::vector<PublicForceCase> LoadPublicForceCases() {
     c.rod.material.torsional_stiffness = *JsonNumber(cj, "torsional_stiffness");
     c.rod.gravity = Vec3::Zero();
     const std::string type = JsonString(cj, "type");
-    c.test.type = type == "clamped_torsion" ? ForceTestType::kClampedTorsion
-                                            : ForceTestType::kPinnedBending;
+    c.test.type =
+        type == "clamped_torsion" ? ForceTestType::kClampedTorsion : ForceTestType::kPinnedBending;
     c.test.prebend = JsonNumber(cj, "prebend").value_or(0.0);
     c.test.max_displacement = JsonNumber(cj, "max_displacement").value_or(0.0);
     c.test.max_angle = JsonNumber(cj, "max_angle").value_or(0.0);

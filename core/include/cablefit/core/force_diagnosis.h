@@ -71,30 +71,30 @@ struct ForceCandidate {
   /// BIC + complexity prior (lower is better); additive over independent curves.
   double criterion = 0.0;
   int parameter_count = 0;
-  double rss = 0.0;                         // residual sum of squares [unit^2]
+  double rss = 0.0;                          // residual sum of squares [unit^2]
   std::map<std::string, double> parameters;  // ratio, sensor_offset, loop_area, ...
   std::vector<JenkinsElement> elements;      // hysteresis only
   Eigen::VectorXd fitted;                    // n [N] or [N m], offset included
 };
 
 struct ForceDiagnosis {
-  std::string file;      ///< the recording's file name (set by the caller, used in text)
+  std::string file;  ///< the recording's file name (set by the caller, used in text)
   ForceEffect effect = ForceEffect::kNone;
   /// "bending_stiffness" or "torsional_stiffness": what a `stiffness` ratio refers to.
   std::string quantity;
-  std::string x_unit;    ///< "m" or "rad"
-  std::string y_unit;    ///< "N" or "N m"
-  double confidence = 0.0;  ///< score of the chosen candidate, in [0, 1]
-  std::vector<ForceCandidate> candidates;  ///< every model considered, best first
+  std::string x_unit;                        ///< "m" or "rad"
+  std::string y_unit;                        ///< "N" or "N m"
+  double confidence = 0.0;                   ///< score of the chosen candidate, in [0, 1]
+  std::vector<ForceCandidate> candidates;    ///< every model considered, best first
   std::map<std::string, double> parameters;  ///< of the chosen model (spec names + nuisances)
   std::vector<JenkinsElement> elements;      ///< hysteresis: the fitted Iwan elements
-  double noise_sigma = 0.0;   ///< residual standard deviation of the chosen model [unit]
-  CurveDeviation baseline;    ///< recorded vs nominal
-  CurveDeviation fitted;      ///< recorded vs fitted
-  Eigen::VectorXd recorded_curve; ///< n, the recorded force/moment
-  Eigen::VectorXd nominal_curve;  ///< n, nominal model per recorded row
-  Eigen::VectorXd fitted_curve;   ///< n, chosen model per recorded row
-  std::string explanation;    ///< one or two sentences for an engineer
+  double noise_sigma = 0.0;        ///< residual standard deviation of the chosen model [unit]
+  CurveDeviation baseline;         ///< recorded vs nominal
+  CurveDeviation fitted;           ///< recorded vs fitted
+  Eigen::VectorXd recorded_curve;  ///< n, the recorded force/moment
+  Eigen::VectorXd nominal_curve;   ///< n, nominal model per recorded row
+  Eigen::VectorXd fitted_curve;    ///< n, chosen model per recorded row
+  std::string explanation;         ///< one or two sentences for an engineer
 };
 
 /// Diagnoses one recorded curve against the nominal rod and rig. Throws InvalidInput for too

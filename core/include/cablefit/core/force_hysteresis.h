@@ -26,8 +26,8 @@ Eigen::VectorXd UnitJenkinsResponse(double slip_displacement, const Eigen::Vecto
                                     double x_start = 0.0);  // n -> n [-]
 
 /// Total force (n) of the Iwan model driven through `x` (n) from the virgin state at `x_start`.
-Eigen::VectorXd IwanResponse(const std::vector<JenkinsElement>& elements,
-                             const Eigen::VectorXd& x, double x_start = 0.0);
+Eigen::VectorXd IwanResponse(const std::vector<JenkinsElement>& elements, const Eigen::VectorXd& x,
+                             double x_start = 0.0);
 
 /// Index of the last row of the first load cycle: x leaves x[0], turns, and the cycle ends at the
 /// first later row where x is back at (or beyond) x[0]. The last row if it never comes back.
