@@ -167,7 +167,7 @@ SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& opti
   r.notes.push_back(
       "bending: eq. 2 integrated exactly over discs and annuli about the E-weighted centre; it "
       "assumes plane sections and no slip between parts, so for a loose bundle the real value "
-      "lies between bending_unbonded (free slip) and the bonded eigenvalues");
+      "lies between bending.unbonded (free slip) and the bonded eigenvalues");
   r.notes.push_back(
       "torsion: Prandtl stress function (eq. 5-6) on nested Cartesian grids with exact cut-edge "
       "coefficients; parts that touch are treated as bonded along their contact");
@@ -176,13 +176,34 @@ SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& opti
         "torsion: " + std::to_string(r.torsion.grids.back().enclosed_voids) +
         " enclosed void(s) found (e.g. gaps between wires inside a tape): each carries a free "
         "constant stress function fixed by the Bredt-Batho circulation condition, so the "
-        "enclosing layer acts as a closed tube; if it can slip or open, use torsion_unbonded");
+        "enclosing layer acts as a closed tube; if it can slip or open, use torsion.unbonded");
   }
-  if (!r.coaxial.applies) {
+  // Point contacts between round parts not embedded in a gap filler.
+  std::vector<char> embedded(spec.parts.size(), 0);
+  for (const std::vector<int>& list : excluded) {
+    for (int k : list) embedded[k] = 1;
+  }
+  int point_contacts = 0;
+  const double touch = 1e-6 * SectionScale(spec);
+  for (size_t i = 0; i < spec.parts.size(); ++i) {
+    for (size_t j = i + 1; j < spec.parts.size(); ++j) {
+      const SectionPart& a = spec.parts[i];
+      const SectionPart& b = spec.parts[j];
+      const double d = (a.centre - b.centre).norm();
+      const bool outside = std::abs(d - a.outer_radius - b.outer_radius) < touch;
+      const bool in_bore = d > touch && (std::abs(d + b.outer_radius - a.inner_radius) < touch ||
+                                         std::abs(d + a.outer_radius - b.inner_radius) < touch);
+      if ((outside || in_bore) && !(embedded[i] && embedded[j])) ++point_contacts;
+    }
+  }
+  if (point_contacts > 0) {
     r.notes.push_back(
-        "torsion: round parts touching at a point are joined over a width that shrinks with the "
-        "grid, so such sections converge slowly and the bonded value is an upper bound; "
-        "torsion_unbonded (parts twisting freely, eq. 9 per part) is the lower bound");
+        "torsion: " + std::to_string(point_contacts) +
+        " point contact(s) between round parts: in the continuum limit a point contact carries "
+        "no shear flow, so the grid joins the parts over a width ~sqrt(h R) that vanishes with "
+        "refinement and the bonded value falls slowly (order ~0.5) towards torsion.unbonded; "
+        "read the grid values as upper estimates whose error estimate may be optimistic, and "
+        "model a bonded bundle with a gap filler (fills_gaps) instead");
   }
   return r;
 }
