@@ -155,22 +155,25 @@ ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& t
                                   const std::string& file) {
   std::string why;
   if (!options.IsValid(&why)) throw InvalidInput("force diagnosis options: " + why);
-  const std::string label = file.empty() ? std::string("force curve") : file;
+  // Bad data is a FileError naming the recording when the caller gave its name.
+  const auto fail = [&](const std::string& problem) {
+    if (file.empty()) throw InvalidInput("force curve: " + problem);
+    throw FileError(file, problem);
+  };
   if (curve.x.size() != curve.y.size()) {
-    throw InvalidInput(label + ": displacement and force columns differ in length");
+    fail("displacement and force columns differ in length");
   }
   const int n = curve.size();
   if (n < options.min_rows) {
-    throw InvalidInput(label + ": " + std::to_string(n) + " rows, need at least " +
-                       std::to_string(options.min_rows));
+    fail(std::to_string(n) + " rows, need at least " + std::to_string(options.min_rows));
   }
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(curve.x[i]) || !std::isfinite(curve.y[i])) {
-      throw InvalidInput(label + ": row " + std::to_string(i + 1) + " is not a finite number");
+      fail("row " + std::to_string(i + 1) + " is not a finite number");
     }
   }
   if (curve.x.maxCoeff() - curve.x.minCoeff() <= 0.0) {
-    throw InvalidInput(label + ": the displacement/angle never changes");
+    fail("the displacement/angle never changes");
   }
   ForceFitProblem problem;
   problem.x = curve.x;
@@ -178,11 +181,11 @@ ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& t
   try {
     problem.nominal = NominalForceCurve(nominal, test, curve.x);
   } catch (const InvalidInput& e) {
-    throw InvalidInput(label + ": " + e.what());
+    fail(e.what());
   }
   problem.peak = problem.nominal.cwiseAbs().maxCoeff();
   if (!(problem.peak > 0.0)) problem.peak = curve.y.cwiseAbs().maxCoeff();
-  if (!(problem.peak > 0.0)) throw InvalidInput(label + ": nominal and recorded curves are zero");
+  if (!(problem.peak > 0.0)) fail("nominal and recorded curves are zero");
 
   ForceDiagnosis base;
   base.file = file;

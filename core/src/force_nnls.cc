@@ -43,6 +43,10 @@ Eigen::VectorXd Nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
       for (Eigen::Index j = 0; j < n; ++j) {
         if (passive[static_cast<size_t>(j)]) set.push_back(static_cast<int>(j));
       }
+      if (set.empty()) {  // every passive unknown was driven back to zero
+        x.setZero();
+        break;
+      }
       const Eigen::VectorXd s_set = SolveOnSet(A, b, set);
       bool feasible = true;
       for (Eigen::Index i = 0; i < s_set.size(); ++i) feasible = feasible && s_set[i] > 0.0;

@@ -138,7 +138,7 @@ class ForceDiagnosisBadInput : public ::testing::Test {
 TEST_F(ForceDiagnosisBadInput, TooFewRows) {
   curve_.x.conservativeResize(3);
   curve_.y.conservativeResize(3);
-  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, {}, "bending.csv"), InvalidInput,
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, {}, "bending.csv"), FileError,
                     "bending.csv: 3 rows");
 }
 
