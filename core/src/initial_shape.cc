@@ -223,9 +223,11 @@ RodState TransferState(const RodModel& from_model, const RodState& from, const R
   for (int i = 0; i < ni; ++i) {
     const RodItem& it = to_model.items[i];
     if (!it.is_element) {
-      // Same support, same frame.
-      const Eigen::Vector4d& q = from.q[from_model.supports[it.support].item];
-      st.q[i] = q;
+      // Same support, same frame (a support new to this model starts at its target).
+      const bool known = it.support < static_cast<int>(from_model.supports.size()) &&
+                         from_model.supports[it.support].item >= 0;
+      st.q[i] = known ? from.q[from_model.supports[it.support].item]
+                      : SupportTargetQuaternion(to_model.supports[it.support]);
       continue;
     }
     const double s = it.s;
@@ -239,9 +241,18 @@ RodState TransferState(const RodModel& from_model, const RodState& from, const R
     st.q[i] = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
   }
   AlignQuaternionSigns(&st);
-  st.lambda = from.lambda;
-  st.support_position = from.support_position;
-  st.support_q = from.support_q;
+  st.lambda = from.lambda.size() == to_model.num_constraints
+                  ? from.lambda
+                  : Eigen::VectorXd(Eigen::VectorXd::Zero(to_model.num_constraints));
+  if (from.support_position.size() == to_model.supports.size()) {
+    st.support_position = from.support_position;
+    st.support_q = from.support_q;
+  } else {
+    for (const RodSupport& sp : to_model.supports) {
+      st.support_position.push_back(sp.position);
+      st.support_q.push_back(SupportTargetQuaternion(sp));
+    }
+  }
   st.load_factor = from.load_factor;
   st.natural_factor = from.natural_factor;
   return st;
