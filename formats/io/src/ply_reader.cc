@@ -332,6 +332,9 @@ PointCloud ReadPly(const std::string& path) {
 }
 
 void WritePly(const std::string& path, const PointCloud& cloud, bool binary) {
+  // ReadPly refuses non-finite vertices, so writing them would produce an unreadable file.
+  if (!cloud.points.allFinite())
+    throw FileError(path, "cannot write point cloud: it holds non-finite coordinates");
   WriteFileAtomically(path, [&](std::ostream& out) {
     out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii")
         << " 1.0\ncomment written by cablefit\nelement vertex " << cloud.size()

@@ -16,7 +16,8 @@ namespace cablefit {
 PointCloud ReadPly(const std::string& path);
 
 /// Writes `cloud` atomically as a PLY with double x, y, z: binary little endian, or ASCII with
-/// shortest round-trip numbers.
+/// shortest round-trip numbers. Throws FileError (and leaves `path` untouched) for non-finite
+/// coordinates.
 void WritePly(const std::string& path, const PointCloud& cloud, bool binary = true);
 
 }  // namespace cablefit
