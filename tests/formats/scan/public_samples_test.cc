@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cablefit/formats/case_reader.h"
+#include "cablefit/formats/ply_reader.h"
 #include "cablefit/formats/scan_centerline_extractor.h"
+#include "cablefit/formats/truth_reader.h"
 #include "scan_test_data.h"
 #include "test_support.h"
 
@@ -14,26 +17,6 @@ namespace cablefit {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CaseSetup {
-  ScanGuide guide;
-  double diameter = 0.0;
-};
-
-CaseSetup LoadSetup(const fs::path& case_json) {
-  std::ifstream in(case_json);
-  const nlohmann::json j = nlohmann::json::parse(in);
-  auto vec = [](const nlohmann::json& a) { return Vec3(a[0].get<double>(), a[1].get<double>(), a[2].get<double>()); };
-  CaseSetup c;
-  c.diameter = j.at("cable").at("diameter").get<double>();
-  c.guide.length = j.at("cable").at("length").get<double>();
-  const auto& clamps = j.at("clamps");
-  c.guide.start_position = vec(clamps.front().at("position"));
-  c.guide.start_tangent = vec(clamps.front().at("tangent"));
-  c.guide.end_position = vec(clamps.back().at("position"));
-  c.guide.end_tangent = vec(clamps.back().at("tangent"));
-  return c;
-}
 
 std::vector<fs::path> ScanCases() {
   std::vector<fs::path> out;
@@ -50,17 +33,22 @@ TEST(PublicScanSamples, CentrelineNoiseAndGapsMatchTruth) {
   ASSERT_GE(cases.size(), 1u) << "no public scan cases under " << testing::SharedDir();
   for (const fs::path& dir : cases) {
     SCOPED_TRACE(dir.filename().string());
-    const PointCloud cloud = testing::LoadFloatPly(dir / "scan.ply");
+    const RecordingCase rc = ReadRecordingCase((dir / "case.json").string());
+    const auto scan_ref = std::find_if(rc.recordings.begin(), rc.recordings.end(),
+                                       [](const RecordingRef& r) { return r.kind == RecordingKind::kScan; });
+    ASSERT_NE(scan_ref, rc.recordings.end());
+    const PointCloud cloud = ReadPly(scan_ref->path);
     const testing::TruthScan truth = testing::LoadTruthScan(dir / "truth.json");
-    const CaseSetup setup = LoadSetup(dir / "case.json");
+    const Polyline true_line = ReadTruthCenterline((dir / "truth.json").string(), "truth_centerline");
+    const ScanGuide guide = ScanGuide::FromRodSpec(rc.nominal);
     ScanCenterlineOptions options;
-    options.diameter = setup.diameter;
+    options.diameter = rc.nominal.material.diameter;
     const auto start = std::chrono::steady_clock::now();
-    const ScanCenterline c = ExtractScanCenterline(cloud, options, setup.guide);
+    const ScanCenterline c = ExtractScanCenterline(cloud, options, guide);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_GT(c.size(), 10);
 
-    const Polyline fine = testing::Densify(truth.centerline, 16);
+    const Polyline fine = testing::Densify(true_line, 16);
     double max_d = 0.0, sum_d2 = 0.0, max_ds = 0.0;
     for (int i = 0; i < c.size(); ++i) {
       const auto [d, s_true] = testing::ProjectOnPolyline(fine, c.points.col(i));
@@ -95,7 +83,7 @@ TEST(PublicScanSamples, CentrelineNoiseAndGapsMatchTruth) {
     EXPECT_LE(worst_gap_edge, 4e-3);
     EXPECT_LE(first_seen_error, 4e-3);
     EXPECT_LE(max_ds, std::max(c.s_error_bound, 1e-3));
-    EXPECT_NEAR(c.estimated_length, setup.guide.length, std::max(c.s_error_bound, 2e-3));
+    EXPECT_NEAR(c.estimated_length, guide.length, std::max(c.s_error_bound, 2e-3));
   }
 }
 

@@ -1,16 +1,12 @@
-// Test-only helpers for the scan tests: a minimal binary PLY loader (until formats/io's ReadPly
-// is available), truth.json's centreline, and distances/arc lengths against a polyline.
+// Test-only helpers for the scan tests: truth.json's scan facts, and distances/arc lengths
+// against a polyline.
 #pragma once
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,38 +14,8 @@
 
 namespace cablefit::testing {
 
-/// Binary little-endian PLY with float x y z vertices only (the sample scans' layout).
-inline PointCloud LoadFloatPly(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open " + path.string());
-  std::string line;
-  long count = -1;
-  int properties = 0;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string word;
-    ls >> word;
-    if (word == "element") {
-      std::string what;
-      ls >> what >> count;
-    } else if (word == "property") {
-      ++properties;
-    } else if (word == "end_header") {
-      break;
-    }
-  }
-  if (count < 0 || properties != 3) throw std::runtime_error("unexpected PLY layout " + path.string());
-  std::vector<float> raw(static_cast<std::size_t>(count) * 3);
-  in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size() * sizeof(float)));
-  PointCloud cloud;
-  cloud.points.resize(3, count);
-  for (long i = 0; i < count; ++i)
-    for (int r = 0; r < 3; ++r) cloud.points(r, i) = raw[static_cast<std::size_t>(3 * i + r)];
-  return cloud;
-}
-
+/// truth.json's `extra.scan` block (what the scan generator did).
 struct TruthScan {
-  Polyline centerline;               // the true centreline
   double noise_sigma = 0.0;          // [m]
   int n_outliers = 0;
   std::vector<Eigen::Vector2d> gaps;  // [m] s intervals not scanned (besides the clamp margins)
@@ -61,14 +27,6 @@ inline TruthScan LoadTruthScan(const std::filesystem::path& path) {
   const nlohmann::json j = nlohmann::json::parse(in);
   const auto& extra = j.at("extra");
   TruthScan t;
-  const auto& s = extra.at("truth_centerline").at("s");
-  const auto& xyz = extra.at("truth_centerline").at("xyz");
-  t.centerline.s.resize(static_cast<Eigen::Index>(s.size()));
-  t.centerline.points.resize(3, static_cast<Eigen::Index>(s.size()));
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    t.centerline.s(static_cast<Eigen::Index>(i)) = s[i].get<double>();
-    for (int r = 0; r < 3; ++r) t.centerline.points(r, static_cast<Eigen::Index>(i)) = xyz[i][static_cast<std::size_t>(r)].get<double>();
-  }
   const auto& scan = extra.at("scan");
   t.noise_sigma = scan.at("noise_sigma").get<double>();
   t.n_outliers = scan.at("n_outliers").get<int>();
