@@ -71,25 +71,45 @@ Stretch RefineTrace(const Trace& trace, const Eigen::Matrix3Xd& points, const Po
     if (FitSlice(points, index, smooth.col(k), t, CurvatureAt(smooth, t, k), params, &fit))
       fits.push_back(std::move(fit));
   }
+  // Slabs hanging over the end of the seen surface hold few points and place their centre
+  // poorly: trim them, but keep their points for the seen extent.
+  std::size_t first = 0, last = fits.size();
+  if (!fits.empty()) {
+    std::vector<std::size_t> counts;
+    for (const SliceFit& f : fits) counts.push_back(f.inliers.size());
+    std::nth_element(counts.begin(), counts.begin() + static_cast<std::ptrdiff_t>(counts.size() / 2), counts.end());
+    const double enough = 0.5 * static_cast<double>(counts[counts.size() / 2]);
+    while (last - first > 2 && static_cast<double>(fits[first].inliers.size()) < enough) ++first;
+    while (last - first > 2 && static_cast<double>(fits[last - 1].inliers.size()) < enough) --last;
+  }
   Stretch s;
-  const auto m = static_cast<Eigen::Index>(fits.size());
+  const auto m = static_cast<Eigen::Index>(last - first);
   Eigen::Matrix3Xd centres(3, m), fit_t(3, m);
   s.radius.resize(m);
   s.support.resize(m);
   for (Eigen::Index k = 0; k < m; ++k) {
-    const SliceFit& f = fits[static_cast<std::size_t>(k)];
+    const SliceFit& f = fits[first + static_cast<std::size_t>(k)];
     centres.col(k) = f.centre;
     fit_t.col(k) = f.tangent;
     s.radius(k) = f.free_radius;
     s.support(k) = static_cast<int>(f.inliers.size());
+  }
+  for (const SliceFit& f : fits) {
     s.inliers.insert(s.inliers.end(), f.inliers.begin(), f.inliers.end());
     s.residuals.insert(s.residuals.end(), f.central_residuals.begin(), f.central_residuals.end());
   }
   s.centres = SmoothCentres(centres);
   s.tangents = m > 1 ? Tangents(s.centres, fit_t) : fit_t;
   if (m > 0) {
-    s.head_extent = -fits.front().axial_min;
-    s.tail_extent = fits.back().axial_max;
+    // Seen extent beyond the end centres: the farthest inlier of the end (and trimmed) slabs.
+    const Eigen::Vector3d c0 = s.centres.col(0), t0 = s.tangents.col(0);
+    const Eigen::Vector3d c1 = s.centres.col(m - 1), t1 = s.tangents.col(m - 1);
+    s.head_extent = -fits[first].axial_min;
+    s.tail_extent = fits[last - 1].axial_max;
+    for (std::size_t k = 0; k <= first; ++k)
+      for (int i : fits[k].inliers) s.head_extent = std::max(s.head_extent, -t0.dot(points.col(i) - c0));
+    for (std::size_t k = last - 1; k < fits.size(); ++k)
+      for (int i : fits[k].inliers) s.tail_extent = std::max(s.tail_extent, t1.dot(points.col(i) - c1));
   }
   return s;
 }
