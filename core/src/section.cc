@@ -151,7 +151,8 @@ SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& opti
   const Eigen::SelfAdjointEigenSolver<Mat2> eig(r.bending_matrix);
   r.bending_min = eig.eigenvalues()[0];
   r.bending_max = eig.eigenvalues()[1];
-  if (r.bending_max - r.bending_min > 1e-12 * r.bending_max) {
+  // Below 1e-6 the axes are round-off of an isotropic section (e.g. coordinates in nm).
+  if (r.bending_max - r.bending_min > 1e-6 * r.bending_max) {
     // The eigenvector is the strain direction; the bending (rotation) axis is 90 degrees on.
     const Vec2 v = eig.eigenvectors().col(1);
     double angle = std::atan2(v.x(), -v.y());
