@@ -79,6 +79,8 @@ TEST(PublicScanSamples, CentrelineNoiseAndGapsMatchTruth) {
     EXPECT_LE(max_d, 0.3e-3);
     EXPECT_LE(rms, 0.1e-3);
     EXPECT_NEAR(c.noise_sigma, truth.noise_sigma, 0.3 * truth.noise_sigma);
+    EXPECT_NEAR(c.outlier_count, truth.n_outliers, 0.25 * truth.n_outliers + 10);
+    EXPECT_TRUE(c.warnings.empty());
     ASSERT_EQ(gaps_ours.size(), gaps_truth.size());
     EXPECT_LE(worst_gap_edge, 4e-3);
     EXPECT_LE(first_seen_error, 4e-3);
