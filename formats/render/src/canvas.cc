@@ -71,25 +71,30 @@ void StrokePolyline(Image& image, const std::vector<Point2>& points, double widt
   if (mask.w == 0 || mask.h == 0) return;
   double dash_total = 0;
   for (double d : dash) dash_total += d;
-  double phase = 0.0;  // distance travelled along the pattern
+  // Dash state carries over from segment to segment so the pattern flows round corners. It is
+  // kept as (index, remaining length) rather than a running phase: a phase grows without bound
+  // and its rounding could stall the walk.
+  std::size_t k = 0;
+  double remaining = dash.empty() ? 0.0 : dash[0];
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Point2& a = points[i - 1];
     const Point2& b = points[i];
     if (!Finite(a) || !Finite(b)) continue;
-    if (dash.empty() || dash_total <= 0) {
+    if (dash.empty() || !(dash_total > 0)) {
       AddCapsule(mask, a, b, hw);
       continue;
     }
     const double len = (b - a).norm();
     double t = 0.0;
-    while (t < len) {
-      double local = std::fmod(phase, dash_total);
-      std::size_t k = 0;
-      while (local >= dash[k]) { local -= dash[k]; k = (k + 1) % dash.size(); }
-      const double step = std::min(dash[k] - local, len - t);
-      if (k % 2 == 0) AddCapsule(mask, a + (b - a) * (t / len), a + (b - a) * ((t + step) / len), hw);
+    while (len - t > 1e-9) {
+      const double step = std::min(remaining, len - t);
+      if (k % 2 == 0 && step > 0) AddCapsule(mask, a + (b - a) * (t / len), a + (b - a) * ((t + step) / len), hw);
       t += step;
-      phase += step;
+      remaining -= step;
+      if (remaining <= 1e-9) {
+        k = (k + 1) % dash.size();
+        remaining = std::max(dash[k], 0.0);
+      }
     }
   }
   mask.Blend(image, colour, alpha);
