@@ -154,3 +154,37 @@ TEST(DeviationViews, RejectsBadInput) {
 
 }  // namespace
 }  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+TEST(DeviationViews, DrawsScanPointsPinsAndTheHighlightedSupport) {
+  const testing::SaggingCable cable;
+  Scene scene = cable.Build();
+  scene.supports.push_back({SupportMarkerKind::kPin, cable.Point(0.75), "P"});
+  scene.highlighted_support = 3;
+  // A scan of the recorded shape, thinned by the caller: points 40 mm beside the cable so they
+  // are not hidden by the tube in any view.
+  const int m = 200;
+  scene.scan_points.resize(3, m);
+  for (int i = 0; i < m; ++i) scene.scan_points.col(i) = cable.Point(i / (m - 1.0)) + Eigen::Vector3d(0, 0.04, 0.04);
+  const RenderOptions options;
+  const ViewLayout layout = PlanDeviationViews(scene, options);
+  const Image image = RenderDeviationViews(scene, options);
+  WritePng((cablefit::testing::FreshTempDir("render") / "scan_and_supports.png").string(), image);
+  for (const auto& panel : layout.panels) {
+    const Eigen::Vector2d scan = panel.camera.Project(scene.scan_points.col(m / 3));
+    EXPECT_LT(ClosestNear(image, scan, 1, Rgb{70, 70, 70}), 60.0) << panel.camera.title;
+    // The red ring around the highlighted pin, 15 px from its centre.
+    const Eigen::Vector2d pin = panel.camera.Project(scene.supports[3].position);
+    double best = 1e9;
+    for (int k = 0; k < 16; ++k) {
+      const double a = k * 3.14159265 / 8;
+      best = std::min(best, ClosestNear(image, pin + 15.0 * Eigen::Vector2d(std::cos(a), std::sin(a)), 0, Rgb{214, 39, 40}));
+    }
+    EXPECT_LT(best, 40.0) << panel.camera.title;
+  }
+}
+
+}  // namespace
+}  // namespace cablefit
