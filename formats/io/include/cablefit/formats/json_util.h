@@ -29,6 +29,7 @@ std::string IndexKey(const std::string& parent, std::size_t index);
 
 /// Read access to an object's fields with validation. `where` is the dotted name of `object`
 /// inside the file ("" for the root); every failure throws FileError(file, "<field> ...").
+/// The reader keeps a reference: `object` must outlive it.
 class FieldReader {
  public:
   FieldReader(const Json& object, std::string file, std::string where = "");
