@@ -3,6 +3,7 @@
 #include <Standard_Failure.hxx>
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
+#include <cmath>
 
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/cad_file.h"
@@ -12,6 +13,32 @@
 #include "xde_document.h"
 
 namespace cablefit {
+namespace {
+
+// Adds points along segments longer than twice the median spacing: a B-spline fitted to
+// unevenly spaced points (a long straight stretch given by its two ends next to a densely
+// sampled bend) swings between them. Other points are kept as they are.
+Eigen::Matrix3Xd FillLongGaps(const Eigen::Matrix3Xd& points) {  // 3 x n [m]
+  const Eigen::Index n = points.cols();
+  std::vector<double> gaps(n - 1);
+  for (Eigen::Index i = 0; i + 1 < n; ++i) gaps[i] = (points.col(i + 1) - points.col(i)).norm();
+  std::vector<double> sorted = gaps;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  std::vector<Eigen::Vector3d> out{points.col(0)};
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    const int pieces = gaps[i] > 2 * median ? static_cast<int>(std::ceil(gaps[i] / median)) : 1;
+    for (int k = 1; k <= pieces; ++k) {
+      const double w = static_cast<double>(k) / pieces;
+      out.push_back((1 - w) * points.col(i) + w * points.col(i + 1));
+    }
+  }
+  Eigen::Matrix3Xd result(3, static_cast<Eigen::Index>(out.size()));  // 3 x m [m]
+  for (size_t i = 0; i < out.size(); ++i) result.col(static_cast<Eigen::Index>(i)) = out[i];
+  return result;
+}
+
+}  // namespace
 
 void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
                       const std::vector<RelaxedCable>& cables) {
@@ -28,7 +55,11 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       throw InvalidInput("cable '" + drawn.name + "': no diameter (drawn as a curve; set one)");
     }
     try {
-      const Eigen::Matrix3Xd points = relaxed.centreline.points / kMetresPerOcctUnit;  // 3 x n [mm]
+      if (relaxed.centreline.size() < 2 || !relaxed.centreline.points.allFinite()) {
+        throw InvalidInput("the relaxed centreline needs at least 2 finite points");
+      }
+      const Eigen::Matrix3Xd points =
+          FillLongGaps(relaxed.centreline.points) / kMetresPerOcctUnit;  // 3 x m [mm]
       // Approximation tolerance well below the 1 %-of-diameter accuracy promised for read-back.
       const double tolerance = std::min(0.01, 1e-3 * diameter / kMetresPerOcctUnit);  // [mm]
       const TopoDS_Wire spine =

@@ -4,7 +4,10 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepOffsetAPI_MakePipe.hxx>
+#include <BRepOffsetAPI_MakePipeShell.hxx>
+#include <TopExp_Explorer.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
@@ -16,6 +19,15 @@
 #include "cablefit/core/errors.h"
 
 namespace cablefit {
+namespace {
+
+bool IsValidTube(const TopoDS_Shape& shape) {
+  int faces = 0;
+  for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) ++faces;
+  return faces >= 3 && BRepCheck_Analyzer(shape).IsValid();
+}
+
+}  // namespace
 
 TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
   const int n = static_cast<int>(points.cols());
@@ -24,9 +36,10 @@ TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
   TColgp_Array1OfPnt pts(1, n);
   for (int i = 0; i < n; ++i) pts.SetValue(i + 1, gp_Pnt(points(0, i), points(1, i), points(2, i)));
   try {
-    // Degree 3..8, C2: smooth enough for a sweep, and exact for a straight pair of points.
-    GeomAPI_PointsToBSpline fit(pts, n == 2 ? 1 : 3, 8, n == 2 ? GeomAbs_C0 : GeomAbs_C2,
-                                tolerance);
+    // Cubic, C2: smooth enough for a sweep; higher degrees with many knots make the pipe
+    // surface approximation fail. A straight pair of points gives a line.
+    GeomAPI_PointsToBSpline fit(pts, n == 2 ? 1 : 3, n == 2 ? 1 : 3,
+                                n == 2 ? GeomAbs_C0 : GeomAbs_C2, tolerance);
     if (!fit.IsDone()) throw InvalidInput("could not fit a B-spline through the centreline");
     return BRepBuilderAPI_MakeEdge(fit.Curve()).Edge();
   } catch (const Standard_Failure& e) {
@@ -47,10 +60,19 @@ TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
     const TopoDS_Wire profile =
         BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire();
     const TopoDS_Face disc = BRepBuilderAPI_MakeFace(profile, /*OnlyPlane=*/true).Face();
-    BRepOffsetAPI_MakePipe pipe(spine, disc);
-    pipe.Build();
-    if (!pipe.IsDone()) throw InvalidInput("could not sweep the tube along the centreline");
-    return pipe.Shape();
+    {
+      BRepOffsetAPI_MakePipe pipe(spine, disc);
+      pipe.Build();
+      // MakePipe can return a "solid" of the two caps alone when its surface approximation
+      // fails on a spine with many knots: accept only a valid solid with a lateral face.
+      if (pipe.IsDone() && IsValidTube(pipe.Shape())) return pipe.Shape();
+    }
+    BRepOffsetAPI_MakePipeShell shell(spine);
+    shell.SetMode(/*IsFrenet=*/false);  // corrected Frenet, as MakePipe
+    shell.Add(profile);
+    shell.Build();
+    if (shell.IsDone() && shell.MakeSolid() && IsValidTube(shell.Shape())) return shell.Shape();
+    throw InvalidInput("could not sweep the tube along the centreline");
   } catch (const Standard_Failure& e) {
     throw InvalidInput(std::string("could not sweep the tube: ") + e.GetMessageString());
   }

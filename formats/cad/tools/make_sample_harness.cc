@@ -1,13 +1,13 @@
-// Generates samples/harness/: a small "legacy" harness drawing as STEP AP214 in millimetres and
-// an STL of two bent tubes. Run: cablefit_make_sample_harness <dir>. The committed samples are
-// its output; the expected values in tests/formats/cad come from the geometry written here.
+// Generates samples/harness/: a small "legacy" harness drawing as STEP AP214 in millimetres (and
+// the same as IGES), and an STL of two bent tubes. Run: cablefit_make_sample_harness <dir>.
+// The committed samples are its output; the expected values in tests/formats/cad come from the geometry written here.
 //
 // legacy_harness.step holds
 //  - assembly "bundle": three routes meeting at the junction (300, 0, 0) mm:
 //    "trunk" (a wire of line + quarter arc + line), "branch_a" (a B-spline edge),
 //    "branch_b" (a polyline wire of three lines);
 //  - "sensor_cable": one B-spline edge;
-//  - "hose": a tube solid, diameter 12 mm, swept along a two-edge B-spline wire (two faces);
+//  - "hose": a tube solid, diameter 12 mm, swept along a B-spline cut into two edges (two faces);
 //  - "clip_box" around branch_a and "clip_ring" (a torus) around sensor_cable.
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -15,7 +15,13 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_Curve.hxx>
 #include <GC_MakeArcOfCircle.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESCAFControl_Writer.hxx>
+#include <Interface_Static.hxx>
+#include <STEPCAFControl_Reader.hxx>
 #include <StlAPI_Writer.hxx>
 #include <TDataStd_Name.hxx>
 #include <TopoDS_Compound.hxx>
@@ -78,9 +84,18 @@ TopoDS_Shape SensorCable() {
 }
 
 TopoDS_Shape Hose() {
+  // One smooth B-spline cut into two edges: the swept tube gets two lateral faces (a drawing
+  // "split into segments") without a kink at the cut.
+  const TopoDS_Edge whole = MakeSplineEdge(
+      Points({{0, -300, 0}, {100, -280, 20}, {200, -290, 40}, {300, -270, 40}, {400, -250, 40},
+              {500, -260, 20}, {600, -250, 0}}),
+      1e-3);
+  double t0, t1;
+  const Handle(Geom_Curve) curve = BRep_Tool::Curve(whole, t0, t1);
+  const double cut = 0.5 * (t0 + t1);
   BRepBuilderAPI_MakeWire spine;
-  spine.Add(MakeSplineEdge(Points({{0, -300, 0}, {100, -280, 20}, {200, -290, 40}, {300, -270, 40}}), 1e-3));
-  spine.Add(MakeSplineEdge(Points({{300, -270, 40}, {400, -250, 40}, {500, -260, 20}, {600, -250, 0}}), 1e-3));
+  spine.Add(BRepBuilderAPI_MakeEdge(curve, t0, cut).Edge());
+  spine.Add(BRepBuilderAPI_MakeEdge(curve, cut, t1).Edge());
   return MakeTubeSolid(spine.Wire(), 12.0);
 }
 
@@ -114,6 +129,25 @@ void WriteHarness(const std::string& path) {
           BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(0, 100, 0), gp_Dir(1, 0.33, 0)), 8, 2).Shape(),
           "clip_ring", {0.6, 0.3, 0.0});
   WriteStepAtomically(doc, path, "AP214IS");
+}
+
+// The same drawing as IGES 5.3 with B-rep solids (the other legacy exchange format).
+void WriteHarnessIges(const std::string& step_path, const std::string& path) {
+  Handle(TDocStd_Document) doc = NewXcafDocument();
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(true);
+  reader.SetColorMode(true);
+  if (reader.ReadFile(step_path.c_str()) != IFSelect_RetDone || !reader.Transfer(doc)) {
+    throw FileError(step_path, "could not re-read the sample");
+  }
+  Interface_Static::SetIVal("write.iges.brep.mode", 1);
+  Interface_Static::SetCVal("write.iges.unit", "MM");
+  IGESCAFControl_Writer writer;
+  writer.SetNameMode(true);
+  writer.SetColorMode(true);
+  const std::string temp = path + ".tmp";
+  if (!writer.Transfer(doc) || !writer.Write(temp.c_str())) throw FileError(path, "could not write IGES");
+  std::filesystem::rename(temp, path);
 }
 
 void WriteBentTubes(const std::string& path) {
@@ -156,6 +190,8 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(dir);
     cablefit::InitOcctSession();
     cablefit::WriteHarness((dir / "legacy_harness.step").string());
+    cablefit::WriteHarnessIges((dir / "legacy_harness.step").string(),
+                               (dir / "legacy_harness.igs").string());
     cablefit::WriteBentTubes((dir / "bent_tubes.stl").string());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cablefit_make_sample_harness: %s\n", e.what());

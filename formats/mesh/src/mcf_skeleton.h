@@ -11,12 +11,14 @@ namespace cablefit {
 struct CurveSkeleton {
   Eigen::Matrix3Xd nodes;                  // 3 x n [m]
   std::vector<std::pair<int, int>> edges;  // node index pairs
-  std::vector<std::vector<int>> vertices;  // per node: the mesh vertices that collapsed onto it
+  // per node: the (remeshed) surface points that collapsed onto it [m]
+  std::vector<std::vector<Eigen::Vector3d>> vertex_points;
 };
 
 /// Mean-curvature-flow skeleton (A. Tagliasacchi, I. Alhashim, M. Olson, H. Zhang, "Mean
 /// Curvature Skeletons", Computer Graphics Forum 31(5), 2012; CGAL's implementation).
-/// `mesh` must be one closed, manifold component. Throws InvalidInput otherwise.
+/// `mesh` must be one closed, manifold component (it is remeshed isotropically first). Throws
+/// InvalidInput otherwise.
 CurveSkeleton ComputeMcfSkeleton(const TriangleMesh& mesh);
 
 }  // namespace cablefit

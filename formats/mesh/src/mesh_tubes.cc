@@ -118,27 +118,42 @@ std::vector<Vec3> Tangents(const std::vector<Vec3>& pts, double step, double win
   return t;
 }
 
-// How far the mesh reaches beyond `end` along `out` (unit), among the vertices within
-// 1.5 radii of the end's axis and within a few radii of the end: the cap.
-double CapDistance(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double radius) {
-  double best = 0;
-  for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {
-    const Vec3 d = mesh.vertices.col(v) - end;
+// The end point of a tube beyond `end` in direction `out` (unit): the area centroid of the cap,
+// i.e. of the faces near the end that face along `out` (the centre of a flat disc cap, even if
+// `out` is a few degrees off). Without such faces (a rounded or ragged end), the point as far
+// along `out` as the mesh reaches within 1.5 radii of the axis.
+Vec3 CapPoint(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double radius) {
+  Vec3 weighted = Vec3::Zero();
+  double area = 0, reach = 0;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
+    const Vec3 a = mesh.vertices.col(mesh.faces(0, f)), b = mesh.vertices.col(mesh.faces(1, f)),
+               c = mesh.vertices.col(mesh.faces(2, f));
+    for (const Vec3& v : {a, b, c}) {
+      const Vec3 d = v - end;
+      const double along = d.dot(out);
+      if (along > 0 && along < 4 * radius && (d - along * out).norm() < 1.5 * radius) {
+        reach = std::max(reach, along);
+      }
+    }
+    const Vec3 centroid = (a + b + c) / 3, d = centroid - end;
     const double along = d.dot(out);
-    if (along <= 0 || along > 4 * radius) continue;
-    if ((d - along * out).norm() > 1.5 * radius) continue;
-    best = std::max(best, along);
+    if (along < -radius || along > 4 * radius || (d - along * out).norm() > 1.2 * radius) continue;
+    const Vec3 n = (b - a).cross(c - a);  // |n| = 2 * area
+    if (n.norm() <= 0 || n.normalized().dot(out) < 0.9) continue;
+    weighted += 0.5 * n.norm() * centroid;
+    area += 0.5 * n.norm();
   }
-  return best;
+  if (area > 0.5 * M_PI * radius * radius) return weighted / area;
+  return end + reach * out;
 }
 
 std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) {
   const CurveSkeleton skeleton = ComputeMcfSkeleton(mesh);
   // A first radius from the skeleton's correspondences: the median vertex-to-node distance.
   std::vector<double> distances;
-  for (size_t n = 0; n < skeleton.vertices.size(); ++n) {
-    for (int v : skeleton.vertices[n]) {
-      distances.push_back((mesh.vertices.col(v) - skeleton.nodes.col(static_cast<Eigen::Index>(n))).norm());
+  for (size_t n = 0; n < skeleton.vertex_points.size(); ++n) {
+    for (const Vec3& q : skeleton.vertex_points[n]) {
+      distances.push_back((q - skeleton.nodes.col(static_cast<Eigen::Index>(n))).norm());
     }
   }
   const double r0 = Median(distances);
@@ -178,12 +193,12 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
         // Carry free ends out to the caps, where the skeleton stops short.
         if (route.start_is_end) {
           const Vec3 out = (pts[0] - pts[std::min(4, n - 1)]).normalized();
-          pts.insert(pts.begin(), pts[0] + CapDistance(mesh, pts[0], out, radius) * out);
+          pts.insert(pts.begin(), CapPoint(mesh, pts[0], out, radius));
         }
         if (route.finish_is_end) {
           const int m = static_cast<int>(pts.size());
           const Vec3 out = (pts[m - 1] - pts[std::max(0, m - 5)]).normalized();
-          pts.push_back(pts[m - 1] + CapDistance(mesh, pts[m - 1], out, radius) * out);
+          pts.push_back(CapPoint(mesh, pts[m - 1], out, radius));
         }
         MeshTube tube;
         tube.component = component;

@@ -64,15 +64,23 @@ TEST(CadFile, TubeFromKnownCentrelineReadsBackWithinOnePercentOfDiameter) {
   EXPECT_TRUE(back.solids.empty());
 }
 
-TEST(CadFile, NamesColoursAndCountSurviveWriteRead) {
-  HarnessDrawing input = ReadCadFile(SampleHarness());
+// For each drawn cable, a route sagging 50 mm between its ends, like a relaxed cable (curves
+// have no drawn diameter: all get `diameter`).
+std::vector<RelaxedCable> SaggingRoutes(const HarnessDrawing& input, double diameter) {
   std::vector<RelaxedCable> relaxed;
   for (size_t i = 0; i < input.cables.size(); ++i) {
-    // Curves have no drawn diameter: give one; shift each route to see the new geometry is used.
-    RelaxedCable r{static_cast<int>(i), input.cables[i].centreline, 0.006};
-    r.centreline.points.row(2).array() -= 0.05;
-    relaxed.push_back(r);
+    const Polyline& drawn = input.cables[i].centreline;
+    const Vec3 a = drawn.points.col(0), b = drawn.points.rightCols<1>();
+    relaxed.push_back({static_cast<int>(i), SampleCurve([&](double u) -> Vec3 {
+      return a + u * (b - a) - Vec3(0, 0, 0.05 * std::sin(M_PI * u));
+    }, 200), diameter});
   }
+  return relaxed;
+}
+
+TEST(CadFile, NamesColoursAndCountSurviveWriteRead) {
+  HarnessDrawing input = ReadCadFile(SampleHarness());
+  const std::vector<RelaxedCable> relaxed = SaggingRoutes(input, 0.006);
   const auto path = (testing::FreshTempDir("cad_names") / "relaxed.step").string();
   WriteRelaxedStep(path, input, relaxed);
   const HarnessDrawing back = ReadCadFile(path);
@@ -89,7 +97,7 @@ TEST(CadFile, NamesColoursAndCountSurviveWriteRead) {
     EXPECT_NEAR(out.color.r, in.color.r, 1.0 / 255) << in.name;
     EXPECT_NEAR(out.color.g, in.color.g, 1.0 / 255) << in.name;
     EXPECT_NEAR(out.color.b, in.color.b, 1.0 / 255) << in.name;
-    const double d = in.diameter > 0 ? in.diameter : 0.006;
+    const double d = 0.006;  // the relaxed diameter overrides the drawn one
     EXPECT_NEAR(out.diameter, d, 0.01 * d) << in.name;
     EXPECT_LT(MaxDistanceToPolyline(out.centreline, relaxed[i].centreline), 0.01 * d) << in.name;
   }
@@ -141,6 +149,18 @@ TEST(CadFile, SampleHarnessHasItsCablesSolidsAndJunction) {
   ASSERT_EQ(h.junctions.size(), 1u);
   EXPECT_EQ(h.junctions[0].ends.size(), 3u);
   EXPECT_NEAR((h.junctions[0].position - Vec3(0.3, 0, 0)).norm(), 0, 1e-6);
+}
+
+TEST(CadFile, SampleHarnessAsIgesHasTheSameCablesAndSolids) {
+  const HarnessDrawing step = ReadCadFile(SampleHarness());
+  const HarnessDrawing iges = ReadCadFile(
+      (testing::SourceDir() / "samples/harness/legacy_harness.igs").string());
+  ASSERT_EQ(iges.cables.size(), step.cables.size());
+  EXPECT_EQ(iges.solids.size(), step.solids.size());
+  double step_length = 0, iges_length = 0;
+  for (const auto& c : step.cables) step_length += c.centreline.ChordLength();
+  for (const auto& c : iges.cables) iges_length += c.centreline.ChordLength();
+  EXPECT_NEAR(iges_length, step_length, 1e-4);
 }
 
 TEST(CadFile, HonoursTheFileLengthUnit) {
@@ -206,9 +226,8 @@ TEST(CadFile, BenchmarkSampleHarnessReadWrite) {
   const auto t0 = std::chrono::steady_clock::now();
   const HarnessDrawing h = ReadCadFile(SampleHarness());
   const auto t1 = std::chrono::steady_clock::now();
-  std::vector<RelaxedCable> relaxed;
-  for (size_t i = 0; i < h.cables.size(); ++i) relaxed.push_back({static_cast<int>(i), h.cables[i].centreline, 0.008});
-  WriteRelaxedStep((testing::FreshTempDir("cad_bench") / "out.step").string(), h, relaxed);
+  WriteRelaxedStep((testing::FreshTempDir("cad_bench") / "out.step").string(), h,
+                   SaggingRoutes(h, 0.008));
   const auto t2 = std::chrono::steady_clock::now();
   std::printf("sample harness read: %.1f ms, write: %.1f ms (%zu cables, %zu solids)\n",
               std::chrono::duration<double, std::milli>(t1 - t0).count(),
