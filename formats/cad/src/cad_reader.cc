@@ -200,7 +200,10 @@ class DrawingBuilder {
       }
     }
     if (cables.size() > 1) {  // one part holding several routes: keep the names apart
-      for (size_t i = 0; i < cables.size(); ++i) cables[i].name += "#" + std::to_string(i + 1);
+      for (size_t i = 0; i < cables.size(); ++i) {
+        cables[i].name += '#';  // appended piecewise: GCC 12 -Wrestrict misfires on "#" + string
+        cables[i].name += std::to_string(i + 1);
+      }
     }
     for (auto& c : cables) drawing_->cables.push_back(std::move(c));
   }

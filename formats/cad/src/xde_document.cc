@@ -68,8 +68,13 @@ void WriteStepAtomically(const Handle(TDocStd_Document)& doc, const std::string&
   const fs::path target(path);
   std::error_code ec;
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  const fs::path temp = target.parent_path() /
-                        ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  // A hidden sibling, so the rename stays on one file system. Built by appending: GCC 12's
+  // -Wrestrict misfires on "literal" + std::string.
+  std::string temp_name(1, '.');
+  temp_name += target.filename().string();
+  temp_name += ".tmp";
+  temp_name += std::to_string(::getpid());
+  const fs::path temp = target.parent_path() / temp_name;
   // The schema must be set before the writer is constructed (docs/stack.md, OCCT traps).
   Interface_Static::SetCVal("write.step.schema", schema.c_str());
   Interface_Static::SetCVal("write.step.unit", "MM");

@@ -1,5 +1,5 @@
 // Generates samples/harness/: a small "legacy" harness drawing as STEP AP214 in millimetres (and
-// the same as IGES), and an STL of two bent tubes. Run: cablefit_make_sample_harness <dir>.
+// the same as IGES), an STL of two bent tubes and one of three tubes fused at a branch point. Run: cablefit_make_sample_harness <dir>.
 // The committed samples are its output; the expected values in tests/formats/cad come from the geometry written here.
 //
 // legacy_harness.step holds
@@ -9,6 +9,7 @@
 //  - "sensor_cable": one B-spline edge;
 //  - "hose": a tube solid, diameter 12 mm, swept along a B-spline cut into two edges (two faces);
 //  - "clip_box" around branch_a and "clip_ring" (a torus) around sensor_cable.
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
@@ -177,6 +178,26 @@ void WriteBentTubes(const std::string& path) {
   std::filesystem::rename(temp, path);
 }
 
+// Three 10 mm tubes fused where they meet at (0, 0, 0): a branched bundle as one closed mesh.
+// Arms: 120 mm along +x, 100 mm at 120 degrees, and 90 mm bending up out of the plane.
+void WriteBranchedTubes(const std::string& path) {
+  auto straight = [](const gp_Pnt& to) {
+    return BRepBuilderAPI_MakeWire(Line(gp_Pnt(0, 0, 0), to)).Wire();
+  };
+  BRepBuilderAPI_MakeWire bent;
+  bent.Add(MakeSplineEdge(Points({{0, 0, 0}, {-30, -30, 0}, {-50, -55, 20}, {-55, -70, 50}}), 1e-3));
+  BRepAlgoAPI_Fuse first(MakeTubeSolid(straight(gp_Pnt(120, 0, 0)), 10.0),
+                         MakeTubeSolid(straight(gp_Pnt(-50, 50 * std::sqrt(3.0), 0)), 10.0));
+  BRepAlgoAPI_Fuse all(first.Shape(), MakeTubeSolid(bent.Wire(), 10.0));
+  if (!all.IsDone()) throw FileError(path, "could not fuse the branched tubes");
+  BRepMesh_IncrementalMesh(all.Shape(), 0.1, false, 0.5, false);
+  StlAPI_Writer writer;
+  writer.ASCIIMode() = false;
+  const std::string temp = path + ".tmp";
+  if (!writer.Write(all.Shape(), temp.c_str())) throw FileError(path, "could not write STL");
+  std::filesystem::rename(temp, path);
+}
+
 }  // namespace
 }  // namespace cablefit
 
@@ -193,6 +214,7 @@ int main(int argc, char** argv) {
     cablefit::WriteHarnessIges((dir / "legacy_harness.step").string(),
                                (dir / "legacy_harness.igs").string());
     cablefit::WriteBentTubes((dir / "bent_tubes.stl").string());
+    cablefit::WriteBranchedTubes((dir / "branched_tubes.stl").string());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cablefit_make_sample_harness: %s\n", e.what());
     return 1;

@@ -111,8 +111,13 @@ void WriteMeshFile(const std::string& path, const TriangleMesh& mesh, double uni
   const fs::path target(path);
   std::error_code ec;
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  const fs::path temp =
-      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
+  // A hidden sibling, so the rename stays on one file system. Built by appending: GCC 12's
+  // -Wrestrict misfires on "literal" + std::string.
+  std::string temp_name(1, '.');
+  temp_name += target.filename().string();
+  temp_name += ".tmp";
+  temp_name += std::to_string(::getpid());
+  const fs::path temp = target.parent_path() / temp_name;
   Assimp::Exporter exporter;
   if (exporter.Export(&scene, format, temp.string()) != aiReturn_SUCCESS) {
     fs::remove(temp, ec);

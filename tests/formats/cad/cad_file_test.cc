@@ -52,6 +52,9 @@ TEST(CadFile, TubeFromKnownCentrelineReadsBackWithinOnePercentOfDiameter) {
   const DrawnCable& cable = back.cables[0];
   EXPECT_EQ(cable.source, CableSourceKind::kTube);
   EXPECT_NEAR(cable.diameter, diameter, 0.01 * diameter);
+  std::printf("STEP tube read-back: centreline max %.2e m, diameter error %.2e m (d = %.3f m)\n",
+              MaxDistanceToPolyline(cable.centreline, truth), std::abs(cable.diameter - diameter),
+              diameter);
   EXPECT_LT(MaxDistanceToPolyline(cable.centreline, truth), 0.01 * diameter);
   EXPECT_LT(MaxDistanceToPolyline(truth, cable.centreline), 0.01 * diameter);  // ends reached
   EXPECT_NEAR(cable.centreline.s(cable.centreline.size() - 1), truth.ChordLength(), 0.01 * diameter);

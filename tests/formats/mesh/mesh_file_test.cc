@@ -41,6 +41,9 @@ TEST(MeshFile, BentTubeStlReadsBackWithinOnePercentOfDiameter) {
               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   ASSERT_EQ(tubes.size(), 1u);
   EXPECT_NEAR(tubes[0].diameter, diameter, 0.01 * diameter);
+  std::printf("STL tube read-back: centreline max %.2e m, diameter error %.2e m (d = %.3f m)\n",
+              MaxDistanceToPolyline(tubes[0].centreline, truth),
+              std::abs(tubes[0].diameter - diameter), diameter);
   EXPECT_LT(MaxDistanceToPolyline(tubes[0].centreline, truth), 0.01 * diameter);
   EXPECT_LT(MaxDistanceToPolyline(truth, tubes[0].centreline), 0.01 * diameter);  // ends reached
   EXPECT_LT(tubes[0].fit_error, 0.01 * diameter);
@@ -106,6 +109,38 @@ TEST(MeshFile, BadInputGivesOneLineFileErrors) {
   WriteMeshFile(open_path, open, 0.001);
   EXPECT_THROW_WITH(ReadMeshFile(open_path, 0.001), FileError, "not a closed surface");
   EXPECT_THROW_WITH(WriteMeshFile((dir / "x.dxf").string(), cube, 0.001), FileError, "extension");
+}
+
+}  // namespace
+}  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+TEST(MeshFile, BranchedTubesSplitIntoRoutesAtTheBranchPoint) {
+  const auto path = (testing::SourceDir() / "samples/harness/branched_tubes.stl").string();
+  const std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
+  // See make_sample_harness.cc: three 10 mm arms fused at the origin.
+  ASSERT_EQ(tubes.size(), 3u);
+  const std::vector<Vec3> caps{{0.12, 0, 0}, {-0.05, 0.05 * std::sqrt(3.0), 0}, {-0.055, -0.07, 0.05}};
+  std::vector<Vec3> near_ends;
+  for (const Vec3& cap : caps) {
+    int found = 0;
+    for (const MeshTube& t : tubes) {
+      const Vec3 a = t.centreline.points.col(0), b = t.centreline.points.rightCols<1>();
+      const bool at_start = (a - cap).norm() < (b - cap).norm();
+      if (((at_start ? a : b) - cap).norm() > 0.0001) continue;  // 1 % of the diameter
+      ++found;
+      EXPECT_NEAR(t.diameter, 0.010, 0.0001);
+      near_ends.push_back(at_start ? b : a);
+    }
+    EXPECT_EQ(found, 1) << cap.transpose();
+  }
+  // The arms meet at one point of the skeleton, inside the fused junction.
+  ASSERT_EQ(near_ends.size(), 3u);
+  EXPECT_LT((near_ends[0] - near_ends[1]).norm(), 1e-12);
+  EXPECT_LT((near_ends[0] - near_ends[2]).norm(), 1e-12);
+  EXPECT_LT(near_ends[0].norm(), 0.010);
 }
 
 }  // namespace
