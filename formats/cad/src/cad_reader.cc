@@ -11,6 +11,7 @@
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TopExp_Explorer.hxx>
@@ -241,7 +242,9 @@ Handle(TDocStd_Document) ReadDocument(const std::string& path, bool iges, std::s
     }
     if (!reader.Transfer(doc)) throw FileError(path, "IGES transfer failed");
     const Handle(IGESData_IGESModel) model = reader.IGESModel();
-    *unit = model.IsNull() ? "mm" : Lower(model->GlobalSection().UnitName()->ToCString());
+    const Handle(TCollection_HAsciiString) name =
+        model.IsNull() ? Handle(TCollection_HAsciiString)() : model->GlobalSection().UnitName();
+    *unit = name.IsNull() ? "mm" : Lower(name->ToCString());
   } else {
     STEPCAFControl_Reader reader;
     reader.SetNameMode(true);

@@ -158,6 +158,7 @@ TEST(CadFile, SampleHarnessAsIgesHasTheSameCablesAndSolids) {
   const HarnessDrawing step = ReadCadFile(SampleHarness());
   const HarnessDrawing iges = ReadCadFile(
       (testing::SourceDir() / "samples/harness/legacy_harness.igs").string());
+  EXPECT_EQ(iges.length_unit, "mm");
   ASSERT_EQ(iges.cables.size(), step.cables.size());
   EXPECT_EQ(iges.solids.size(), step.solids.size());
   double step_length = 0, iges_length = 0;
