@@ -1,0 +1,31 @@
+// A small dense Levenberg-Marquardt (Moré 1978 damping, Nielsen's update) for the effect fits:
+// a handful of parameters, residuals from a forward rod solve, Jacobian by forward differences.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+
+namespace cablefit {
+
+struct LmOptions {
+  int max_iterations = 30;
+  double relative_step = 1e-4;   // finite-difference step relative to `scale`
+  double cost_tolerance = 1e-9;  // stop when the relative cost decrease is below this
+};
+
+struct LmResult {
+  Eigen::VectorXd x;
+  double cost = 0.0;  // 1/2 |r|^2
+  int iterations = 0;
+  int evaluations = 0;
+  bool ok = false;    // at least one successful evaluation
+};
+
+/// `residual(x, &r)` returns false when the model cannot be evaluated at x (e.g. the solver did
+/// not converge); such points are treated as infinitely bad. `scale` gives each parameter's
+/// typical size (finite-difference steps and damping are scaled by it).
+LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>& residual,
+                              const Eigen::VectorXd& x0, const Eigen::VectorXd& scale,
+                              const LmOptions& options);
+
+}  // namespace cablefit

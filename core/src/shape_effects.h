@@ -1,0 +1,39 @@
+// The catalogue's shape effects as parametrised changes of the nominal RodSpec
+// (recording-v1.md, "The catalogue of effects"). Every model also carries, as its last parameter,
+// the far clamp's rotation about its own tangent: the twist a clamp imposes is not observable
+// from a case's normals as recorded (see DiagnoseShape), so it is fitted in every model alike.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cablefit/core/rod_spec.h"
+
+namespace cablefit {
+
+struct EffectModel {
+  std::string effect;                 // catalogue name
+  int physical_parameters = 0;        // counted by the selection criterion
+  std::optional<int> clamp;           // clamp (support) index for clamp effects
+  std::vector<std::string> names;     // physical parameter names (for reports)
+  Eigen::VectorXd scale;              // typical size of every parameter (incl. the nuisance)
+  std::vector<Eigen::VectorXd> starts;  // starting physical parameters
+  /// Parameters (physical..., nuisance twist) -> the changed spec.
+  std::function<RodSpec(const Eigen::VectorXd&)> apply;
+};
+
+/// Index of the support whose twist is the nuisance parameter (last clamp), or -1.
+int NuisanceClampIndex(const RodSpec& nominal);
+
+/// Applies the nuisance rotation (radians about the clamp tangent) to `spec`.
+void ApplyNuisanceTwist(int clamp, double angle, RodSpec* spec);
+
+/// Every fittable model for `nominal`. `reaction_moment[k]` is the nominal moment magnitude at
+/// support k [N m] (scales the compliance starts).
+std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
+                                           const std::vector<double>& reaction_moment);
+
+}  // namespace cablefit
