@@ -1,0 +1,21 @@
+// A fixed pool of std::threads for `--jobs N` batch commands: runs independent work items
+// (cases, input files) in parallel, at most N at a time, in index order of starting.
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <vector>
+
+namespace cablefit::addin {
+
+/// The worker count for a `--jobs` value: `requested` if > 0, else the hardware concurrency
+/// (at least 1); never more than `items` (and at least 1).
+int ResolveJobs(int requested, int items);
+
+/// Calls `work(i)` for every i in [0, items) on `jobs` threads (jobs <= 1: on the calling
+/// thread, in order). Items are taken in increasing i as workers become free. An exception
+/// escaping `work(i)` is stored at index i of the result (null where the item succeeded) and
+/// does not stop the other items. Work items must not share mutable state without locking.
+std::vector<std::exception_ptr> RunBatch(int items, int jobs, const std::function<void(int)>& work);
+
+}  // namespace cablefit::addin

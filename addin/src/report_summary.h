@@ -1,0 +1,32 @@
+// The run summary of `cablefit diagnose` (DIR/report.html): one sortable row per case with its
+// verdict and a link to the case report, failed inputs with their error.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cablefit::addin {
+
+struct SummaryRow {
+  std::string name;        // case name, or the input file when it could not be read
+  std::string link;        // relative link to the case report; empty when it failed
+  std::string kind;        // "shape" / "force"
+  std::string effect;      // empty when it failed
+  double confidence = 0.0;
+  std::optional<std::pair<double, double>> interval;  // [m]
+  std::optional<int> clamp;
+  double baseline_max = 0.0, fitted_max = 0.0;
+  std::string deviation_unit = "m";
+  double seconds = 0.0;
+  std::string error;       // one-line problem when it failed
+};
+
+/// The whole summary page; `total_seconds` is the wall time of the run.
+std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_seconds, int jobs);
+
+/// Writes the summary to `path` atomically.
+void WriteRunSummary(const std::string& path, const std::vector<SummaryRow>& rows,
+                     double total_seconds, int jobs);
+
+}  // namespace cablefit::addin
