@@ -17,18 +17,6 @@ Vec3 Hermite(const Vec3& p0, const Vec3& m0, const Vec3& p1, const Vec3& m1, dou
          (t3 - t2) * m1;
 }
 
-double HermiteLength(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& t1, double a,
-                     int samples) {
-  double len = 0.0;
-  Vec3 prev = p0;
-  for (int i = 1; i <= samples; ++i) {
-    const Vec3 p = Hermite(p0, a * t0, p1, a * t1, static_cast<double>(i) / samples);
-    len += (p - prev).norm();
-    prev = p;
-  }
-  return len;
-}
-
 // Rotation taking unit vector a to unit vector b with the least angle.
 Eigen::Matrix3d MinimalRotation(const Vec3& a, const Vec3& b) {
   return Eigen::Quaterniond::FromTwoVectors(a, b).toRotationMatrix();
@@ -100,20 +88,53 @@ Polyline DefaultInitialCurve(const RodSpec& spec, int samples_per_span) {
     const double arc = sup[k + 1].s - sup[k].s;
     const double chord = (p1 - p0).norm();
     const int fine = 8 * samples_per_span;
-    // Tangent scale a with HermiteLength(a) = arc: bracket, then bisect.
-    double lo = 0.0, hi = std::max(arc, 1e-9);
-    int guard = 0;
-    while (HermiteLength(p0, tan[k], p1, tan[k + 1], hi, fine) < arc && guard++ < 60) hi *= 2;
-    for (int it = 0; it < 60; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (HermiteLength(p0, tan[k], p1, tan[k + 1], mid, fine) < arc ? lo : hi) = mid;
+    // Bulge direction: gravity across the chord (a drawn cable sags), else any perpendicular.
+    const Vec3 axis = chord > 0 ? Vec3((p1 - p0) / chord) : tan[k];
+    Vec3 bulge = down - down.dot(axis) * axis;
+    if (bulge.norm() < 1e-6) bulge = axis.unitOrthogonal();
+    bulge.normalize();
+    auto curve = [&](double a, double beta, double t) {
+      const double b = 16 * t * t * (1 - t) * (1 - t);  // zero value and slope at both ends
+      return Vec3(Hermite(p0, a * tan[k], p1, a * tan[k + 1], t) + beta * b * bulge);
+    };
+    auto length = [&](double a, double beta) {
+      double len = 0.0;
+      Vec3 prev = p0;
+      for (int i = 1; i <= fine; ++i) {
+        const Vec3 p = curve(a, beta, static_cast<double>(i) / fine);
+        len += (p - prev).norm();
+        prev = p;
+      }
+      return len;
+    };
+    // Tangent scale a = chord is the natural one; a shorter span shrinks a, a longer one bulges.
+    // (Lengthening by a alone can fold the curve back onto a line when the tangents lie along
+    // the chord.)
+    double a = chord, beta = 0.0;
+    if (chord >= arc * (1 - 1e-12)) {
+      a = chord;
+    } else if (length(chord, 0.0) >= arc) {
+      double lo = 0.0, hi = chord;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (length(mid, 0.0) < arc ? lo : hi) = mid;
+      }
+      a = 0.5 * (lo + hi);
+    } else {
+      double lo = 0.0, hi = std::max(arc, 1e-9);
+      int guard = 0;
+      while (length(chord, hi) < arc && guard++ < 60) hi *= 2;
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (length(chord, mid) < arc ? lo : hi) = mid;
+      }
+      beta = 0.5 * (lo + hi);
     }
-    const double a = chord >= arc * (1 - 1e-12) ? chord : 0.5 * (lo + hi);
     // Sample by the curve's own arc length so s is right within the span.
     std::vector<Vec3> dense(fine + 1);
     std::vector<double> cum(fine + 1, 0.0);
     for (int i = 0; i <= fine; ++i) {
-      dense[i] = Hermite(p0, a * tan[k], p1, a * tan[k + 1], static_cast<double>(i) / fine);
+      dense[i] = curve(a, beta, static_cast<double>(i) / fine);
       if (i > 0) cum[i] = cum[i - 1] + (dense[i] - dense[i - 1]).norm();
     }
     const double scale = cum[fine] > 0 ? arc / cum[fine] : 0.0;
