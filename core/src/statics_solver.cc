@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <random>
 #include <sstream>
 
 #include "block_tridiagonal.h"
@@ -327,7 +328,33 @@ void EvaluateStability(const RodModel& model, const RodState& state, StaticsSumm
   summary->negative_directions = kkt.ok ? kkt.negative_directions : -1;
 }
 
+StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state, const StaticsOptions& options);
+
 StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options) {
+  StaticsSummary sum = SolveStaticsFrom(model, state, options);
+  if (!options.escape_unstable || !sum.converged() || sum.stable) return sum;
+  // A saddle: small deterministic pseudo-random rotations break the symmetry that held the
+  // solver there; the line search then only goes downhill, towards a stable state.
+  std::mt19937 rng(12345);
+  std::normal_distribution<double> nd(0.0, 1.0);
+  const std::vector<char> free = FreeMask(model);
+  for (double amplitude : {0.01, 0.03, 0.1}) {
+    RodState trial = *state;
+    Eigen::VectorXd kick(3 * model.items.size());
+    for (int k = 0; k < kick.size(); ++k) kick[k] = free[k] ? amplitude * nd(rng) : 0.0;
+    ApplyStep(model, kick, 1.0, &trial);
+    StaticsSummary again = SolveStaticsDirect(model, &trial, options);
+    again.iterations += sum.iterations;
+    if (again.converged() && again.stable && again.final_energy < sum.final_energy) {
+      *state = trial;
+      again.message = "left an unstable equilibrium";
+      return again;
+    }
+  }
+  return sum;
+}
+
+StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state, const StaticsOptions& options) {
   const auto t0 = Clock::now();
   std::string why;
   CABLEFIT_CHECK(options.IsValid(&why), why);

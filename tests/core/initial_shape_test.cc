@@ -36,7 +36,7 @@ TEST(InitialShapeTest, DefaultCurveOfALevelSpanHasTheLengthAndSagsDown) {
     RodSimulator sim;
     const SimulationResult r = sim.Simulate(spec);
     ASSERT_TRUE(r.converged) << r.solution.summary.BriefReport();
-    EXPECT_TRUE(r.solution.summary.stable);
+    EXPECT_TRUE(r.solution.summary.stable) << "span " << span;
     EXPECT_LT(r.solution.centerline.points.row(2).minCoeff(), 0.5 - 1e-3);
   }
 }

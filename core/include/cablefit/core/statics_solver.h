@@ -30,6 +30,10 @@ struct StaticsOptions {
   int max_continuation_steps = 200;
   /// Ramp gravity and point loads from 0 together with the support poses when continuing.
   bool ramp_loads = false;
+  /// When the solution is an unstable equilibrium (a saddle reached from a symmetric start, e.g.
+  /// a planar loop that would fall sideways), perturb it and solve again to find a stable one.
+  /// Off for stability studies that want the verdict of the state they start from.
+  bool escape_unstable = true;
   ProgressCallback progress;
 
   bool IsValid(std::string* why) const;
