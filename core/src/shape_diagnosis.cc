@@ -63,26 +63,44 @@ struct Fit {
 
 Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel& m,
              const Eigen::VectorXd& nuisance, int max_iterations) {
-  Fit best;
-  best.model = &m;
   const int np = m.physical_parameters;
   const int nn = static_cast<int>(m.scale.size()) - np;
+  struct Run {
+    RodSimulator sim;
+    LmResult lm;
+  };
+  auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
+    auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
+      return Residual(ctx, &r->sim, m.apply(x), res);
+    };
+    LmOptions opt;
+    opt.max_iterations = iterations;
+    r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
+  };
+  // Many starts (interval and contact positions, anisotropy angles): a few iterations each,
+  // then only the most promising ones are carried to convergence.
+  const bool screen = m.starts.size() > 2;
+  std::vector<Run> runs;
   for (const Eigen::VectorXd& start : m.starts) {
-    RodSimulator sim = base;
     Eigen::VectorXd x0(np + nn);
     x0.head(np) = start;
     if (nn) x0.tail(nn) = nuisance;
-    auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* r) {
-      return Residual(ctx, &sim, m.apply(x), r);
-    };
-    LmOptions opt;
-    opt.max_iterations = max_iterations;
-    const LmResult res = MinimiseLeastSquares(fn, x0, m.scale, opt);
-    if (res.ok && res.cost < best.cost) {
-      best.x = res.x;
-      best.cost = res.cost;
-      best.ok = true;
-    }
+    Run r{base, {}};
+    run(&r, x0, screen ? 4 : max_iterations);
+    if (r.lm.ok) runs.push_back(std::move(r));
+  }
+  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
+  if (screen) {
+    if (runs.size() > 2) runs.resize(2);
+    for (Run& r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
+    std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
+  }
+  Fit best;
+  best.model = &m;
+  if (!runs.empty()) {
+    best.x = runs.front().lm.x;
+    best.cost = runs.front().lm.cost;
+    best.ok = true;
   }
   return best;
 }
