@@ -120,6 +120,10 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
         continue;
       }
       if (!truth.converged) {
+        // The hidden truth itself could not be solved from the default shape: not a diagnosis
+        // result, but reported so a regression in the solver shows.
+        std::printf("%-7s %-24s truth solve failed: %s\n", layouts[li].name, effects[ei].c_str(),
+                    truth.solution.summary.BriefReport().c_str());
         ++failed;
         continue;
       }
@@ -172,6 +176,7 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
   std::printf("identified %d of %d (%.0f %%), none false positives %d, truth solves failed %d\n",
               correct, total, 100.0 * correct / std::max(1, total), none_false_positive, failed);
   EXPECT_EQ(none_false_positive, 0);
+  EXPECT_LE(failed, 2);
   EXPECT_GE(correct, 0.85 * total);
 }
 
