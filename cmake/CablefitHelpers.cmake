@@ -20,6 +20,9 @@ function(cablefit_test_dir)
   endif()
   add_executable(${T_NAME} ${_srcs})
   target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} cablefit_test_support GTest::gtest_main cablefit_warnings)
-  gtest_discover_tests(${T_NAME} DISCOVERY_TIMEOUT 60 PROPERTIES ENVIRONMENT
-    "CABLEFIT_SOURCE_DIR=${PROJECT_SOURCE_DIR};CABLEFIT_BINARY_DIR=${PROJECT_BINARY_DIR}")
+  # One variable per property: gtest_discover_tests splits a ';'-list value into separate
+  # arguments, which silently dropped the second variable of a single ENVIRONMENT list.
+  gtest_discover_tests(${T_NAME} DISCOVERY_TIMEOUT 60 PROPERTIES
+    ENVIRONMENT "CABLEFIT_SOURCE_DIR=${PROJECT_SOURCE_DIR}"
+    ENVIRONMENT_MODIFICATION "CABLEFIT_BINARY_DIR=set:${PROJECT_BINARY_DIR}")
 endfunction()
