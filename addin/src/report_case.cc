@@ -46,12 +46,26 @@ std::string ParametersTable(const DiagnosedCase& d) {
 }
 
 std::string CandidatesTable(const DiagnosedCase& d) {
+  // Shape fits also carry each candidate's BIC (shown relative to the best, so the margin to the
+  // runner-up is readable) and, when the diagnosis provides them, its deviations.
+  std::vector<const EffectCandidate*> shape;
+  bool deviations = false;
+  double best_bic = 0.0;
+  for (const auto& [effect, score] : d.candidates) {
+    const EffectCandidate* c = nullptr;
+    if (d.shape)
+      for (const EffectCandidate& e : d.shape->candidates)
+        if (e.effect == effect) c = &e;
+    shape.push_back(c);
+    if (c) deviations = deviations || c->max_deviation > 0.0;
+  }
+  const bool has_bic = d.shape && !d.shape->candidates.empty();
+  if (has_bic) best_bic = d.shape->candidates.front().bic;
   std::ostringstream h;
   h << "<table class=\"sortable\"><thead><tr><th>effect</th><th class=\"num\">score</th>"
        "<th>posterior weight</th>";
-  const bool shape = d.shape.has_value();
-  if (shape) h << "<th class=\"num\">max deviation</th><th class=\"num\">rms deviation</th>"
-                  "<th class=\"num\">parameters</th>";
+  if (has_bic) h << "<th class=\"num\">\u0394BIC</th><th class=\"num\">parameters</th>";
+  if (deviations) h << "<th class=\"num\">max deviation</th><th class=\"num\">rms deviation</th>";
   h << "</tr></thead><tbody>\n";
   for (std::size_t i = 0; i < d.candidates.size(); ++i) {
     const auto& [effect, score] = d.candidates[i];
@@ -59,18 +73,22 @@ std::string CandidatesTable(const DiagnosedCase& d) {
       << "</td><td class=\"num\" data-value=\"" << score << "\">" << FormatNumber(score, 3)
       << "</td><td data-value=\"" << score << "\"><div class=\"bar\"><span style=\"width:"
       << std::max(0.0, std::min(100.0, 100.0 * score)) << "%\"></span></div></td>";
-    if (shape) {
-      const EffectCandidate* c = nullptr;
-      for (const EffectCandidate& e : d.shape->candidates)
-        if (e.effect == effect) c = &e;
-      if (c) {
+    const EffectCandidate* c = shape[i];
+    if (has_bic) {
+      if (c)
+        h << "<td class=\"num\" data-value=\"" << c->bic - best_bic << "\">"
+          << FormatNumber(c->bic - best_bic, 3) << "</td><td class=\"num\">" << c->parameter_count
+          << "</td>";
+      else
+        h << "<td></td><td></td>";
+    }
+    if (deviations) {
+      if (c)
         h << "<td class=\"num\" data-value=\"" << c->max_deviation << "\">"
           << FormatLength(c->max_deviation) << "</td><td class=\"num\" data-value=\""
-          << c->rms_deviation << "\">" << FormatLength(c->rms_deviation)
-          << "</td><td class=\"num\">" << c->parameter_count << "</td>";
-      } else {
-        h << "<td></td><td></td><td></td>";
-      }
+          << c->rms_deviation << "\">" << FormatLength(c->rms_deviation) << "</td>";
+      else
+        h << "<td></td><td></td>";
     }
     h << "</tr>\n";
   }
@@ -110,9 +128,7 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
   h << "<section class=\"card\"><h2>Verdict</h2><div class=\"facts\">\n"
     << Fact("effect", HtmlEscape(d.effect))
     << Fact("confidence", FormatNumber(100.0 * d.confidence, 3) + " %")
-    << Fact("interval", d.interval ? FormatNumber(d.interval->first, 3) + " \u2013 " +
-                                         FormatNumber(d.interval->second, 3) + " m"
-                                   : "\u2013")
+    << Fact("interval", d.interval ? FormatInterval(*d.interval) + " m" : "\u2013")
     << Fact("clamp", d.clamp ? std::to_string(*d.clamp) : "\u2013")
     << Fact("baseline max / rms", HtmlEscape(FormatDeviation(d.baseline.max, d.deviation_unit) +
                                              " / " +
@@ -145,7 +161,8 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     << ParametersTable(d) << "</section>\n"
     << "<section class=\"card\"><h2>Candidates</h2>\n" << CandidatesTable(d)
     << "<p style=\"color:var(--muted);font-size:13px\">Score: posterior weight of each effect "
-       "from the Bayesian information criterion; the best is listed first.</p></section></div>\n";
+       "from the Bayesian information criterion (\u0394BIC: difference to the best; above 10 is very "
+       "strong evidence against); the best is listed first.</p></section></div>\n";
 
   h << "<section class=\"card\"><h2>Nominal set-up</h2><div class=\"facts\">\n"
     << Fact("length", HtmlEscape(FormatLength(rc.nominal.length)))

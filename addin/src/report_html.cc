@@ -46,9 +46,17 @@ std::string FormatDeviation(double value, const std::string& unit) {
   return FormatNumber(value) + " " + unit;
 }
 
+std::string FormatInterval(const std::pair<double, double>& interval) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.3f \u2013 %.3f", interval.first, interval.second);
+  return buf;
+}
+
 std::string FormatSeconds(double seconds) {
   char buf[64];
-  if (seconds < 10.0)
+  if (seconds < 0.1)
+    std::snprintf(buf, sizeof buf, "%.0f ms", seconds * 1e3);
+  else if (seconds < 10.0)
     std::snprintf(buf, sizeof buf, "%.1f s", seconds);
   else if (seconds < 120.0)
     std::snprintf(buf, sizeof buf, "%.0f s", seconds);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 namespace cablefit::addin {
 
@@ -19,6 +20,9 @@ std::string FormatLength(double metres);
 
 /// A deviation in `unit` ("m" -> FormatLength, else number + unit).
 std::string FormatDeviation(double value, const std::string& unit);
+
+/// An arc-length interval [m] as "0.187 \u2013 0.260" (millimetre resolution, no unit).
+std::string FormatInterval(const std::pair<double, double>& interval);
 
 /// Seconds as "0.8 s", "12 s", "2 min 5 s".
 std::string FormatSeconds(double seconds);

@@ -51,9 +51,7 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
     h << "<td><span class=\"badge " << EffectBadge(r.effect) << "\">" << HtmlEscape(r.effect)
       << "</span></td><td class=\"num\" data-value=\"" << r.confidence << "\">"
       << FormatNumber(100.0 * r.confidence, 3) << " %</td><td>"
-      << (r.interval ? FormatNumber(r.interval->first, 3) + " \u2013 " +
-                           FormatNumber(r.interval->second, 3)
-                     : "\u2013")
+      << (r.interval ? FormatInterval(*r.interval) : "\u2013")
       << "</td><td class=\"num\" data-value=\"" << (r.clamp ? *r.clamp : -1) << "\">"
       << (r.clamp ? std::to_string(*r.clamp) : "\u2013") << "</td><td class=\"num\" data-value=\""
       << r.baseline_max << "\">" << HtmlEscape(FormatDeviation(r.baseline_max, r.deviation_unit))
