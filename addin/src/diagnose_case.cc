@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <optional>
 #include <filesystem>
 
 #include "cablefit/core/errors.h"
@@ -41,6 +43,12 @@ auto Blame(const std::string& file, Fn&& fn) {
   }
 }
 
+std::string FormatMicrons(double metres) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.1f \u00b5m", metres * 1e6);
+  return buf;
+}
+
 Eigen::Matrix3Xd SubSample(const Eigen::Matrix3Xd& points, int max_points) {
   const Eigen::Index n = points.cols();
   if (n <= max_points || max_points <= 0) return points;
@@ -65,25 +73,50 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     cloud = ReadPly(scan_ref->path);
     out->scan_points = SubSample(cloud.points, options.max_picture_points);
   }
-  // A measured centreline is cleaner than one extracted from a scan, so it is fitted when
-  // present; the scan then only shows in the pictures.
+  // With both a scan and a measured centreline, the fit uses the one that carries more
+  // information about the shape: the larger (number of centre points) / sigma^2. A scan that
+  // cannot be traced then only shows in the pictures.
+  std::optional<ShapeObservation> from_line;
   if (line_ref) {
     const Polyline line = ReadCenterlineCsv(line_ref->path);
     if (line.size() < 3) throw FileError(line_ref->path, "needs at least 3 points");
-    out->observation = ObservationFromCenterline(line, rc.nominal.length);
-    out->observation_source = line_ref->file;
-  } else {
+    from_line = ObservationFromCenterline(line, rc.nominal.length);
+  }
+  std::optional<ScanCenterline> scan;
+  if (scan_ref) {
     Report(progress, 0.05, "scan centreline");
     ScanCenterlineOptions so;
     so.diameter = rc.nominal.material.diameter;
-    ScanCenterline scan = Blame(scan_ref->path, [&] {
-      return ExtractScanCenterline(cloud, so, ScanGuide::FromRodSpec(rc.nominal));
-    });
-    if (scan.size() < 3) throw FileError(scan_ref->path, "too few cable centres recovered");
-    out->observation = ObservationFromScan(scan);
+    try {
+      scan = Blame(scan_ref->path, [&] {
+        return ExtractScanCenterline(cloud, so, ScanGuide::FromRodSpec(rc.nominal));
+      });
+      if (scan->size() < 3) throw FileError(scan_ref->path, "too few cable centres recovered");
+    } catch (const FileError& e) {
+      if (!from_line) throw;
+      out->notes.push_back(std::string(e.what()) + "; the centre line is used instead");
+      scan.reset();
+    }
+  }
+  const auto information = [](const ShapeObservation& o) {
+    return static_cast<double>(o.points.cols()) / (o.noise_sigma * o.noise_sigma);
+  };
+  std::optional<ShapeObservation> from_scan;
+  if (scan) from_scan = ObservationFromScan(*scan);
+  if (from_scan && (!from_line || information(*from_scan) > information(*from_line))) {
+    out->observation = std::move(*from_scan);
     out->observation_source = scan_ref->file;
-    for (const std::string& w : scan.warnings) out->notes.push_back(scan_ref->file + ": " + w);
+    for (const std::string& w : scan->warnings) out->notes.push_back(scan_ref->file + ": " + w);
+    if (from_line)
+      out->notes.push_back("fitted to the scan (" + std::to_string(scan->size()) +
+                           " centres, noise " + FormatMicrons(out->observation.noise_sigma) +
+                           ") rather than " + line_ref->file + " (" +
+                           std::to_string(from_line->points.cols()) + " points, noise " +
+                           FormatMicrons(from_line->noise_sigma) + "): it carries more information");
     out->scan = std::move(scan);
+  } else {
+    out->observation = std::move(*from_line);
+    out->observation_source = line_ref->file;
   }
   ShapeDiagnosisOptions so = options.shape;
   so.progress = Stage(progress, 0.15, 1.0);

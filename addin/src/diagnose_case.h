@@ -54,7 +54,8 @@ struct DiagnosedCase {
 
   // ---- shape cases ----
   std::optional<ShapeDiagnosis> shape;
-  std::string observation_source;       // file the fit used (centreline or scan)
+  std::string observation_source;       // file the fit used: scan or centreline, whichever
+                                        // carries more information (points / sigma^2)
   ShapeObservation observation;         // what the fit saw
   Eigen::Matrix3Xd scan_points;         // 3 x m [m] sub-sampled raw scan (pictures), may be empty
   std::optional<ScanCenterline> scan;   // when the fit used a scan
