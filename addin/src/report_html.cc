@@ -127,7 +127,8 @@ p.explanation { font-size:16px; margin:6px 0 0; }
 table { border-collapse:collapse; width:100%; font-variant-numeric:tabular-nums; }
 th, td { text-align:left; padding:7px 10px; border-bottom:1px solid var(--line); vertical-align:top; }
 th { background:#eef1f6; font-weight:600; font-size:13px; color:#334; white-space:nowrap; }
-td.num, th.num { text-align:right; }
+td.num, th.num { text-align:right; white-space:nowrap; }
+td:first-child { white-space:nowrap; }
 table.sortable th { cursor:pointer; user-select:none; }
 table.sortable th:after { content:" \2195"; color:#9aa5b5; font-size:11px; }
 table.sortable th.asc:after { content:" \2191"; color:var(--accent); }
