@@ -205,8 +205,11 @@ int RunRelax(const RelaxArgs& a) {
       return;
     }
     try {
-      bar.Update(2 * n + i, 0.1, f.stem + ": write STEP");
+      bar.Update(2 * n + i, 0.1, f.stem + ": write JSON, STEP");
       auto t0 = Clock::now();
+      json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, config));
+      f.times.json = Since(t0);
+      t0 = Clock::now();
       {
         std::lock_guard lock(cad_mutex);
         WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config);
@@ -222,9 +225,6 @@ int RunRelax(const RelaxArgs& a) {
         WriteDeviationPicture((out / f.picture).string(), f, config);
         f.times.picture = Since(t0);
       }
-      t0 = Clock::now();
-      json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, config));
-      f.times.json = Since(t0);
       char buf[512];
       std::snprintf(buf, sizeof buf,
                     "%s: %zu cables, %zu solids; seconds: read %.3f, relax %.3f, STEP %.3f, "

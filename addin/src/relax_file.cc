@@ -1,12 +1,14 @@
 #include "relax_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 #include <limits>
 #include <map>
 
 #include "cablefit/core/errors.h"
+#include "cablefit/core/rod_simulation.h"
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/mesh_file.h"
 
@@ -80,23 +82,42 @@ double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& conf
   return drawn.diameter > 0 ? drawn.diameter : kDefaultDiameter;
 }
 
+namespace {
+
+// The relaxed centreline at about `per_diameter` points per diameter (17 to 401 points): the
+// writer interpolates a B-spline through them, and a spline through a few hundred points with a
+// tight turn near an end can make the OCCT pipe sweep fail where a sparser one does not.
+Polyline ForWriting(const Polyline& relaxed, double diameter, double per_diameter) {
+  const double length = relaxed.s[relaxed.size() - 1];
+  const int n = std::clamp(static_cast<int>(std::ceil(length / diameter * per_diameter)) + 1, 17, 401);
+  return SampleCenterline(relaxed, UniformArcLengths(length, n));
+}
+
+}  // namespace
+
 void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
                           const HarnessConfig& config) {
-  std::vector<RelaxedCable> out;
-  for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
-    RelaxedCable rc;
-    rc.source_cable = static_cast<int>(i);
-    rc.diameter = OutputDiameter(f, static_cast<int>(i), config);
-    rc.centreline = f.cables[i] ? f.cables[i]->relaxed : f.drawing.cables[i].centreline;
-    out.push_back(std::move(rc));
+  std::string first_problem;
+  for (const double per_diameter : {2.0, 0.5}) {
+    std::vector<RelaxedCable> out;
+    for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+      RelaxedCable rc;
+      rc.source_cable = static_cast<int>(i);
+      rc.diameter = OutputDiameter(f, static_cast<int>(i), config);
+      rc.centreline = f.cables[i] ? ForWriting(f.cables[i]->relaxed, rc.diameter, per_diameter)
+                                  : f.drawing.cables[i].centreline;
+      out.push_back(std::move(rc));
+    }
+    try {
+      WriteRelaxedStep(path, f.drawing, out);
+      return;
+    } catch (const FileError&) {
+      throw;
+    } catch (const InvalidInput& e) {
+      if (first_problem.empty()) first_problem = e.what();
+    }
   }
-  try {
-    WriteRelaxedStep(path, f.drawing, out);
-  } catch (const FileError&) {
-    throw;
-  } catch (const InvalidInput& e) {
-    throw FileError(path, e.what());
-  }
+  throw FileError(path, first_problem);
 }
 
 json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) {

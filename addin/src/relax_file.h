@@ -47,7 +47,8 @@ struct RelaxedFile {
 /// the drawn one, else the default.
 double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& config);
 
-/// Writes DIR/<stem>.step: relaxed cables (failed ones as drawn, so names and count are kept)
+/// Writes DIR/<stem>.step: relaxed cables resampled to about two points per diameter (retried
+/// sparser if the sweep fails), failed ones as drawn so names and count are kept,
 /// and the drawing's solids.
 void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
                           const HarnessConfig& config);
