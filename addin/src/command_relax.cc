@@ -71,7 +71,9 @@ std::vector<std::string> UniqueStems(const std::vector<std::string>& files) {
   for (const std::string& f : files) {
     const fs::path p(f);
     std::string stem = p.stem().string();
-    if (used.count(stem)) stem += "-" + p.extension().string().substr(std::min<size_t>(1, p.extension().string().size()));
+    if (used.count(stem))
+      stem +=
+          "-" + p.extension().string().substr(std::min<size_t>(1, p.extension().string().size()));
     for (int k = 2; used.count(stem); ++k) stem = p.stem().string() + "-" + std::to_string(k);
     used.insert(stem);
     stems.push_back(stem);
@@ -177,7 +179,8 @@ int RunRelax(const RelaxArgs& a) {
     const auto t0 = Clock::now();
     std::string problem;
     try {
-      CableSetup setup = SetUpCable(f.drawing, job.cable, boxes[static_cast<size_t>(job.file)], config);
+      CableSetup setup =
+          SetUpCable(f.drawing, job.cable, boxes[static_cast<size_t>(job.file)], config);
       CableRelaxation r = RelaxCable(std::move(setup), sim_options, config.min_bend_radius_factor);
       if (!r.result.converged) {
         problem = "the solver did not converge: " + r.result.solution.summary.message;
@@ -194,7 +197,9 @@ int RunRelax(const RelaxArgs& a) {
     }
     job_seconds[static_cast<size_t>(k)] = Since(t0);
   });
-  for (int k = 0; k < nj; ++k) files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].times.relax += job_seconds[static_cast<size_t>(k)];
+  for (int k = 0; k < nj; ++k)
+    files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].times.relax +=
+        job_seconds[static_cast<size_t>(k)];
 
   // 3. Write each input's outputs.
   RunBatch(n, ResolveJobs(a.jobs, n), [&](int i) {
@@ -266,8 +271,9 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   auto args = std::make_shared<RelaxArgs>();
   auto* cmd = app.add_subcommand(
       "relax", "Relax the cables of harness CAD or meshes under gravity from their drawn shape");
-  cmd->add_option("INPUT", args->inputs, "STEP/IGES files, meshes (STL, OBJ, PLY, glTF...), or "
-                                         "folders of them")
+  cmd->add_option("INPUT", args->inputs,
+                  "STEP/IGES files, meshes (STL, OBJ, PLY, glTF...), or "
+                  "folders of them")
       ->required();
   cmd->add_option("--out", args->out_dir,
                   "output folder: <stem>.step, <stem>.json, <stem>-deviation.png, report.html")

@@ -102,8 +102,8 @@ void ReadMaterial(const FieldReader& r, CableConfig* c) {
 }
 
 CableConfig ReadCable(const FieldReader& r, bool is_default) {
-  std::set<std::string> keys = {"material", "diameter", "gravity", "start", "end",
-                                "auto_clips", "note"};
+  std::set<std::string> keys = {"material", "diameter",   "gravity", "start",
+                                "end",      "auto_clips", "note"};
   if (!is_default) keys.insert("supports");
   RequireKnownKeys(r, keys);
   CableConfig c;
@@ -116,8 +116,8 @@ CableConfig ReadCable(const FieldReader& r, bool is_default) {
   if (r.Has("supports")) {
     const Json& list = r.RequireArray("supports");
     for (size_t i = 0; i < list.size(); ++i) {
-      c.supports.push_back(
-          ReadSupport(FieldReader(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "supports"), i))));
+      c.supports.push_back(ReadSupport(
+          FieldReader(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "supports"), i))));
     }
   }
   return c;

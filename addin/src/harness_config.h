@@ -22,8 +22,8 @@ struct EndConfig {
 /// An extra support, placed by arc length or by the point nearest on the drawn route.
 struct ExtraSupportConfig {
   SupportKind kind = SupportKind::kClip;
-  std::optional<double> s;      ///< [m] arc length along the drawn route
-  std::optional<Vec3> point;    ///< [m] support position; s = nearest arc length
+  std::optional<double> s;    ///< [m] arc length along the drawn route
+  std::optional<Vec3> point;  ///< [m] support position; s = nearest arc length
   bool sliding = false;
 };
 
@@ -31,19 +31,19 @@ struct ExtraSupportConfig {
 struct CableConfig {
   /// Rod material without diameter; unset -> derived from the diameter (see relax_material.h).
   std::optional<MaterialSpec> material;
-  std::string material_source;      ///< "harness.json", or the section file it came from
-  std::optional<double> diameter;   ///< [m] overrides the drawn diameter
-  std::optional<Vec3> gravity;      ///< [m/s^2]
+  std::string material_source;     ///< "harness.json", or the section file it came from
+  std::optional<double> diameter;  ///< [m] overrides the drawn diameter
+  std::optional<Vec3> gravity;     ///< [m/s^2]
   std::optional<EndConfig> start, end;
   std::vector<ExtraSupportConfig> supports;
-  std::optional<bool> auto_clips;   ///< add a clip where the route passes a solid (default on)
+  std::optional<bool> auto_clips;  ///< add a clip where the route passes a solid (default on)
 };
 
 struct HarnessConfig {
-  std::string path;                    ///< empty when no --config was given
-  Vec3 gravity = Vec3(0, 0, -9.81);    ///< [m/s^2] model frame of the CAD file
-  double min_bend_radius_factor = 5.0; ///< flag bends tighter than this many diameters
-  CableConfig defaults;                ///< "default": applies to every cable
+  std::string path;                           ///< empty when no --config was given
+  Vec3 gravity = Vec3(0, 0, -9.81);           ///< [m/s^2] model frame of the CAD file
+  double min_bend_radius_factor = 5.0;        ///< flag bends tighter than this many diameters
+  CableConfig defaults;                       ///< "default": applies to every cable
   std::map<std::string, CableConfig> cables;  ///< by cable name
 
   /// `defaults` overlaid with the entry for `name` (if any).

@@ -43,7 +43,8 @@ SupportSpec EndSupport(const EndConfig& end, double s, const Polyline& route,
 
 // Keeps the candidates in priority order, dropping an automatic clip closer than `gap` to a
 // kept support; two explicit supports that close are a set-up error.
-std::vector<Candidate> Place(std::vector<Candidate> all, double gap, std::vector<std::string>* notes) {
+std::vector<Candidate> Place(std::vector<Candidate> all, double gap,
+                             std::vector<std::string>* notes) {
   std::stable_sort(all.begin(), all.end(),
                    [](const Candidate& a, const Candidate& b) { return a.priority > b.priority; });
   std::vector<Candidate> kept;
@@ -54,8 +55,8 @@ std::vector<Candidate> Place(std::vector<Candidate> all, double gap, std::vector
     if (clash == kept.end()) {
       kept.push_back(c);
     } else if (c.priority <= 1) {
-      notes->push_back(c.origin + " at s=" + Metres(c.spec.s) + " ignored: within " +
-                       Metres(gap) + " of the " + clash->origin + " support");
+      notes->push_back(c.origin + " at s=" + Metres(c.spec.s) + " ignored: within " + Metres(gap) +
+                       " of the " + clash->origin + " support");
     } else {
       throw InvalidInput(c.origin + " support at s=" + Metres(c.spec.s) + " is within " +
                          Metres(gap) + " of the " + clash->origin + " support at s=" +
@@ -115,7 +116,8 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
 
   // Twist-free frames along the drawing: clamps hold the drawn cross-section orientation, with
   // the start normal pointing as far "up" (against gravity) as the tangent allows.
-  const Vec3 up = out.spec.gravity.norm() > 0 ? Vec3(-out.spec.gravity.normalized()) : Vec3::UnitZ();
+  const Vec3 up =
+      out.spec.gravity.norm() > 0 ? Vec3(-out.spec.gravity.normalized()) : Vec3::UnitZ();
   const Eigen::Matrix3Xd normals = TransportedNormals(route, up);
 
   std::vector<Candidate> candidates;
@@ -129,8 +131,8 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     sp.sliding = e.sliding;
     if (e.s) {
       if (*e.s > length) {
-        throw InvalidInput("harness.json support at s=" + Metres(*e.s) + " lies beyond the cable (" +
-                           Metres(length) + ")");
+        throw InvalidInput("harness.json support at s=" + Metres(*e.s) +
+                           " lies beyond the cable (" + Metres(length) + ")");
       }
       sp.s = *e.s;
       sp.position = RoutePoint(route, sp.s);
@@ -211,8 +213,8 @@ CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
   const RodSolution& sol = r.result.solution;
   double max_kappa = 0.0;
   for (size_t i = 0; i + 1 < sol.frames.size(); ++i) {
-    const double ds = sol.frame_s[static_cast<Eigen::Index>(i + 1)] -
-                      sol.frame_s[static_cast<Eigen::Index>(i)];
+    const double ds =
+        sol.frame_s[static_cast<Eigen::Index>(i + 1)] - sol.frame_s[static_cast<Eigen::Index>(i)];
     const Vec3& a = sol.frames[i].d3;
     const Vec3& b = sol.frames[i + 1].d3;
     const double kappa = std::atan2(a.cross(b).norm(), a.dot(b)) / ds;
@@ -249,12 +251,9 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
   Json supports = Json::array();
   for (size_t k = 0; k < spec.supports.size(); ++k) {
     const SupportSpec& sp = spec.supports[k];
-    Json s = {{"kind", ToString(sp.kind)},
-              {"s", sp.s},
-              {"position", ToJson(sp.position)},
-              {"tangent", ToJson(sp.tangent.normalized())},
-              {"sliding", sp.sliding},
-              {"origin", su.support_origin[k]}};
+    Json s = {{"kind", ToString(sp.kind)},       {"s", sp.s},
+              {"position", ToJson(sp.position)}, {"tangent", ToJson(sp.tangent.normalized())},
+              {"sliding", sp.sliding},           {"origin", su.support_origin[k]}};
     if (k < res.solution.reactions.size()) {
       s["reaction"] = {{"force", ToJson(res.solution.reactions[k].force)},
                        {"moment", ToJson(res.solution.reactions[k].moment)}};
@@ -264,14 +263,15 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
   j["supports"] = supports;
   if (!su.junction.empty()) j["junction"] = su.junction;
   const Eigen::Index imax = std::min<Eigen::Index>(
-      r.relaxed.size() - 1,
-      static_cast<Eigen::Index>(std::lround(r.max_deviation_s / spec.length * (r.relaxed.size() - 1))));
-  j["deviation"] = {{"max", r.max_deviation},
-                    {"rms", r.rms_deviation},
-                    {"max_at", {{"s", r.max_deviation_s}, {"point", ToJson(r.relaxed.points.col(imax))}}},
-                    {"measure", "distance of the relaxed centreline to the drawn route"}};
-  const Polyline at = SampleCenterline(res.solution.centerline,
-                                       Eigen::VectorXd::Constant(1, r.min_bend_radius_s));
+      r.relaxed.size() - 1, static_cast<Eigen::Index>(std::lround(r.max_deviation_s / spec.length *
+                                                                  (r.relaxed.size() - 1))));
+  j["deviation"] = {
+      {"max", r.max_deviation},
+      {"rms", r.rms_deviation},
+      {"max_at", {{"s", r.max_deviation_s}, {"point", ToJson(r.relaxed.points.col(imax))}}},
+      {"measure", "distance of the relaxed centreline to the drawn route"}};
+  const Polyline at =
+      SampleCenterline(res.solution.centerline, Eigen::VectorXd::Constant(1, r.min_bend_radius_s));
   j["min_bend_radius"] = {{"radius", NumberOrNull(r.min_bend_radius)},
                           {"s", r.min_bend_radius_s},
                           {"point", ToJson(at.points.col(0))},
@@ -293,8 +293,8 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
                        "deviation of a curve's sampling, RMS circle-fit residual of a tube)"}};
   Json pts = Json::array();
   for (int i = 0; i < r.relaxed.size(); ++i) {
-    pts.push_back({r.relaxed.s[i], r.relaxed.points(0, i), r.relaxed.points(1, i),
-                   r.relaxed.points(2, i)});
+    pts.push_back(
+        {r.relaxed.s[i], r.relaxed.points(0, i), r.relaxed.points(1, i), r.relaxed.points(2, i)});
   }
   j["relaxed_centreline"] = {{"columns", {"s", "x", "y", "z"}}, {"rows", pts}};
   j["notes"] = su.notes;

@@ -29,16 +29,17 @@ MaterialSpec DefaultBundleMaterial(double diameter);  // diameter [m]
 
 /// The rod set-up of one drawn cable.
 struct CableSetup {
-  int cable = 0;                    ///< index into HarnessDrawing::cables
+  int cable = 0;  ///< index into HarnessDrawing::cables
   std::string name;
-  Polyline route;                   ///< drawn route, s by chords from 0 [m]
+  Polyline route;  ///< drawn route, s by chords from 0 [m]
   RodSpec spec;
   bool diameter_defaulted = false;
   bool material_defaulted = false;
-  std::string material_source;      ///< "default bundle estimate", harness.json, section file
-  std::vector<std::string> support_origin;  ///< per spec support: "start", "end", "harness.json", "clip <solid>"
-  std::string junction;             ///< non-empty when an end meets 2+ other cables
-  std::vector<std::string> notes;   ///< assumptions, one sentence each
+  std::string material_source;  ///< "default bundle estimate", harness.json, section file
+  std::vector<std::string>
+      support_origin;    ///< per spec support: "start", "end", "harness.json", "clip <solid>"
+  std::string junction;  ///< non-empty when an end meets 2+ other cables
+  std::vector<std::string> notes;  ///< assumptions, one sentence each
 };
 
 /// Builds the set-up. `boxes` are the bounding boxes of `drawing.solids` (same order).
@@ -50,15 +51,15 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
 struct CableRelaxation {
   CableSetup setup;
   SimulationResult result;
-  Polyline relaxed;             ///< uniformly sampled solution, s [m], points 3 x n [m]
-  Eigen::VectorXd deviation;    ///< n [m] distance of each relaxed sample to the drawn route
-  double max_deviation = 0.0;   ///< [m]
-  double rms_deviation = 0.0;   ///< [m]
-  double max_deviation_s = 0.0; ///< [m]
-  double min_bend_radius = 0.0; ///< [m] (infinity when straight)
+  Polyline relaxed;                ///< uniformly sampled solution, s [m], points 3 x n [m]
+  Eigen::VectorXd deviation;       ///< n [m] distance of each relaxed sample to the drawn route
+  double max_deviation = 0.0;      ///< [m]
+  double rms_deviation = 0.0;      ///< [m]
+  double max_deviation_s = 0.0;    ///< [m]
+  double min_bend_radius = 0.0;    ///< [m] (infinity when straight)
   double min_bend_radius_s = 0.0;  ///< [m]
-  bool bend_flag = false;       ///< min bend radius < factor * diameter
-  double bend_limit = 0.0;      ///< [m] factor * diameter
+  bool bend_flag = false;          ///< min bend radius < factor * diameter
+  double bend_limit = 0.0;         ///< [m] factor * diameter
   double seconds = 0.0;
   bool ok() const { return result.converged; }
 };

@@ -10,7 +10,7 @@ namespace cablefit::addin {
 namespace {
 
 OrientedBox BoxAlong(const Eigen::Matrix3Xd& v, const Mat3& axes) {  // v: 3 x n [m]
-  const Eigen::Matrix3Xd local = axes.transpose() * v;                // 3 x n [m]
+  const Eigen::Matrix3Xd local = axes.transpose() * v;               // 3 x n [m]
   const Vec3 lo = local.rowwise().minCoeff();
   const Vec3 hi = local.rowwise().maxCoeff();
   OrientedBox box;

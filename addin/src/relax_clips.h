@@ -13,9 +13,9 @@ namespace cablefit::addin {
 
 /// An oriented box: centre + rotation (columns = box axes) + half extents.
 struct OrientedBox {
-  Vec3 centre = Vec3::Zero();        // 3 [m]
-  Mat3 axes = Mat3::Identity();      // 3 x 3, columns unit box axes (world)
-  Vec3 half_extent = Vec3::Zero();   // 3 [m] along each axis
+  Vec3 centre = Vec3::Zero();       // 3 [m]
+  Mat3 axes = Mat3::Identity();     // 3 x 3, columns unit box axes (world)
+  Vec3 half_extent = Vec3::Zero();  // 3 [m] along each axis
 
   bool Contains(const Vec3& p) const;
   double Volume() const { return 8 * half_extent.prod(); }

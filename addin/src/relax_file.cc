@@ -1,8 +1,8 @@
 #include "relax_file.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -38,8 +38,8 @@ bool IsMeshPath(const std::string& path) {
 
 double UnitInMetres(const std::string& name) {
   static const std::map<std::string, double> kUnits = {
-      {"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"um", 1e-6}, {"in", 0.0254},
-      {"inch", 0.0254}, {"ft", 0.3048}};
+      {"m", 1.0},     {"cm", 0.01},     {"mm", 0.001}, {"um", 1e-6},
+      {"in", 0.0254}, {"inch", 0.0254}, {"ft", 0.3048}};
   const auto it = kUnits.find(name);
   if (it == kUnits.end()) {
     throw InvalidInput("unknown length unit '" + name + "' (use m, cm, mm, um, in or ft)");
@@ -50,7 +50,8 @@ double UnitInMetres(const std::string& name) {
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   if (IsCadPath(path)) return ReadCadFile(path);
   if (!IsMeshPath(path)) {
-    throw FileError(path, "unknown extension (expected STEP, IGES or a mesh: STL, OBJ, PLY, glTF...)");
+    throw FileError(path,
+                    "unknown extension (expected STEP, IGES or a mesh: STL, OBJ, PLY, glTF...)");
   }
   const std::vector<MeshTube> tubes = ReadMeshFile(path, mesh_unit);
   if (tubes.empty()) throw FileError(path, "no tube found in the mesh");
@@ -89,7 +90,8 @@ namespace {
 // tight turn near an end can make the OCCT pipe sweep fail where a sparser one does not.
 Polyline ForWriting(const Polyline& relaxed, double diameter, double per_diameter) {
   const double length = relaxed.s[relaxed.size() - 1];
-  const int n = std::clamp(static_cast<int>(std::ceil(length / diameter * per_diameter)) + 1, 17, 401);
+  const int n =
+      std::clamp(static_cast<int>(std::ceil(length / diameter * per_diameter)) + 1, 17, 401);
   return SampleCenterline(relaxed, UniformArcLengths(length, n));
 }
 

@@ -32,15 +32,15 @@ struct StageTimes {
 
 /// Everything known about one input after the run.
 struct RelaxedFile {
-  std::string input;            ///< path as found
-  std::string stem;             ///< output file stem (unique in the run)
+  std::string input;  ///< path as found
+  std::string stem;   ///< output file stem (unique in the run)
   HarnessDrawing drawing;
   std::vector<std::optional<CableRelaxation>> cables;  ///< per drawn cable; empty when it failed
   std::vector<std::string> cable_errors;               ///< per drawn cable; empty when it succeeded
-  std::string error;            ///< the file's one-line problem (without the path); empty if none
+  std::string error;  ///< the file's one-line problem (without the path); empty if none
   bool read_ok = false;
   StageTimes times;
-  std::string picture;          ///< PNG file name next to the outputs, empty if none
+  std::string picture;  ///< PNG file name next to the outputs, empty if none
 };
 
 /// The diameter `cable` is drawn with in the output: relaxed set-up's, else harness.json's or

@@ -19,9 +19,12 @@ std::mutex& RenderMutex() {
 
 SupportMarkerKind MarkerOf(SupportKind kind) {
   switch (kind) {
-    case SupportKind::kClamp: return SupportMarkerKind::kClamp;
-    case SupportKind::kClip: return SupportMarkerKind::kClip;
-    case SupportKind::kPin: return SupportMarkerKind::kPin;
+    case SupportKind::kClamp:
+      return SupportMarkerKind::kClamp;
+    case SupportKind::kClip:
+      return SupportMarkerKind::kClip;
+    case SupportKind::kPin:
+      return SupportMarkerKind::kPin;
   }
   return SupportMarkerKind::kPin;
 }
@@ -114,8 +117,7 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
       if (f.cables[i]) {
         h << Row(f.stem, f.drawing.cables[i].name, *f.cables[i]);
       } else {
-        h << "<tr><td>" << HtmlEscape(f.stem) << "</td><td>"
-          << HtmlEscape(f.drawing.cables[i].name)
+        h << "<tr><td>" << HtmlEscape(f.stem) << "</td><td>" << HtmlEscape(f.drawing.cables[i].name)
           << "</td><td colspan=\"9\"><span class=\"badge fail\">failed</span> "
           << HtmlEscape(f.cable_errors[i]) << "</td><td></td></tr>\n";
       }

@@ -41,11 +41,14 @@ Polyline CleanRoute(const Polyline& drawn) {
   // Uniform resampling at the median spacing (at most length / 64): a straight line given by
   // its two ends next to a finely sampled arc would otherwise bias the local tangent fits.
   std::vector<double> gaps(static_cast<size_t>(raw.size() - 1));
-  for (Eigen::Index i = 0; i + 1 < raw.size(); ++i) gaps[static_cast<size_t>(i)] = raw.s[i + 1] - raw.s[i];
-  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2), gaps.end());
+  for (Eigen::Index i = 0; i + 1 < raw.size(); ++i)
+    gaps[static_cast<size_t>(i)] = raw.s[i + 1] - raw.s[i];
+  std::nth_element(gaps.begin(), gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2),
+                   gaps.end());
   const double length = raw.s[raw.size() - 1];
   const double spacing = std::min(gaps[gaps.size() / 2], length / 64);
-  const Eigen::Index n = std::max<Eigen::Index>(2, static_cast<Eigen::Index>(std::ceil(length / spacing - 1e-9)) + 1);
+  const Eigen::Index n =
+      std::max<Eigen::Index>(2, static_cast<Eigen::Index>(std::ceil(length / spacing - 1e-9)) + 1);
   Polyline route;
   route.s = Eigen::VectorXd::LinSpaced(n, 0.0, length);
   route.points.resize(3, n);

@@ -62,9 +62,9 @@ TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
                                Q(Sample("branched_tubes.stl")) + " --out " + Q(out));
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
   std::printf("%s", run.out.c_str());  // per-cable lines and per-stage times (benchmark figure)
-  for (const char* f : {"legacy_harness.step", "legacy_harness.json", "legacy_harness-deviation.png",
-                        "branched_tubes.step", "branched_tubes.json", "branched_tubes-deviation.png",
-                        "report.html"}) {
+  for (const char* f : {"legacy_harness.step", "legacy_harness.json",
+                        "legacy_harness-deviation.png", "branched_tubes.step",
+                        "branched_tubes.json", "branched_tubes-deviation.png", "report.html"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
     EXPECT_GT(fs::file_size(out / f), 1000u) << f;
   }
@@ -92,7 +92,8 @@ TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
     // Both ends held at their drawn positions.
     const Json& rows = c.at("relaxed_centreline").at("rows");
     const Json& first = c.at("supports").front().at("position");
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(rows.front()[k + 1].get<double>(), first[k].get<double>(), 1e-9);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(rows.front()[k + 1].get<double>(), first[k].get<double>(), 1e-9);
     EXPECT_GT(c.at("deviation").at("max").get<double>(), 0.0) << name;
     EXPECT_GE(c.at("deviation").at("max").get<double>(), c.at("deviation").at("rms").get<double>());
     EXPECT_EQ(c.at("supports").front().at("reaction").at("force").size(), 3u);
@@ -100,7 +101,8 @@ TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
   // Breakout at (0.3, 0, 0): its three branches say how the junction was treated.
   for (const char* name : {"trunk", "branch_a", "branch_b"}) {
     EXPECT_EQ(CableNamed(j, name).value("junction", ""),
-              "clamped (branched bundles not yet solved as one network)") << name;
+              "clamped (branched bundles not yet solved as one network)")
+        << name;
   }
   EXPECT_FALSE(CableNamed(j, "hose").contains("junction"));
   // branch_a runs through clip_box: a clip support in between its clamps.
@@ -137,8 +139,8 @@ TEST(RelaxCli, CableDrawnAsItsOwnEquilibriumComesBackUnchanged) {
   arc.points.resize(3, 101);
   for (int i = 0; i <= 100; ++i) {
     const double phi = -theta + 2 * theta * i / 100.0;
-    arc.points.col(i) = Vec3(0.5 * chord + radius * std::sin(phi), 0,
-                             radius * (std::cos(phi) - std::cos(theta)));
+    arc.points.col(i) =
+        Vec3(0.5 * chord + radius * std::sin(phi), 0, radius * (std::cos(phi) - std::cos(theta)));
   }
   RodSpec spec;
   spec.name = "test_cable";
@@ -157,7 +159,8 @@ TEST(RelaxCli, CableDrawnAsItsOwnEquilibriumComesBackUnchanged) {
   const SimulationResult truth = sim.Simulate(spec, &arc);
   ASSERT_TRUE(truth.converged) << truth.solution.summary.message;
   ASSERT_TRUE(truth.solution.summary.stable);
-  const Polyline drawn = SampleCenterline(truth.solution.centerline, UniformArcLengths(spec.length, 226));
+  const Polyline drawn =
+      SampleCenterline(truth.solution.centerline, UniformArcLengths(spec.length, 226));
 
   const fs::path dir = testing::FreshTempDir("relax_equilibrium");
   WriteOneCableStep(dir / "equilibrium.step", drawn, spec.material.diameter);
@@ -191,8 +194,8 @@ TEST(RelaxCli, CableDrawnAsItsOwnEquilibriumComesBackUnchanged) {
 // Stress and Strain, table 8.1 case 2e).
 TEST(RelaxCli, StraightCableSagsByTheClampedClampedBeamFormula) {
   const double length = 0.5, ei = 0.05, mass = 0.05, g = 9.81;
-  const double q = mass * g;                        // [N/m]
-  ASSERT_LT(q * std::pow(length, 3) / ei, 1.5);     // small load: linear theory holds
+  const double q = mass * g;                     // [N/m]
+  ASSERT_LT(q * std::pow(length, 3) / ei, 1.5);  // small load: linear theory holds
   const double expected = q * std::pow(length, 4) / (384 * ei);
   Polyline line;
   line.points.resize(3, 2);
@@ -216,7 +219,8 @@ TEST(RelaxCli, StraightCableSagsByTheClampedClampedBeamFormula) {
   EXPECT_LT(p[2].get<double>(), 0.05);  // downwards
   // Each clamp carries half the weight.
   for (const Json& sp : c.at("supports")) {
-    EXPECT_NEAR(sp.at("reaction").at("force")[2].get<double>(), 0.5 * q * length, 1e-3 * q * length);
+    EXPECT_NEAR(sp.at("reaction").at("force")[2].get<double>(), 0.5 * q * length,
+                1e-3 * q * length);
   }
 }
 
@@ -235,25 +239,37 @@ TEST(RelaxCli, BadInputsGiveOneLineEachAndTheRestOfTheBatchIsDone) {
   {  // a cube is not a tube
     const char* cube =
         "solid cube\n"
-        "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 10 10 0\nvertex 10 0 0\nendloop\nendfacet\n"
-        "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 10 0\nvertex 10 10 0\nendloop\nendfacet\n"
-        "facet normal 0 0 1\nouter loop\nvertex 0 0 10\nvertex 10 0 10\nvertex 10 10 10\nendloop\nendfacet\n"
-        "facet normal 0 0 1\nouter loop\nvertex 0 0 10\nvertex 10 10 10\nvertex 0 10 10\nendloop\nendfacet\n"
-        "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 10 0 0\nvertex 10 0 10\nendloop\nendfacet\n"
-        "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 10 0 10\nvertex 0 0 10\nendloop\nendfacet\n"
-        "facet normal 0 1 0\nouter loop\nvertex 0 10 0\nvertex 10 10 10\nvertex 10 10 0\nendloop\nendfacet\n"
-        "facet normal 0 1 0\nouter loop\nvertex 0 10 0\nvertex 0 10 10\nvertex 10 10 10\nendloop\nendfacet\n"
-        "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 10 10\nvertex 0 10 0\nendloop\nendfacet\n"
-        "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 10\nvertex 0 10 10\nendloop\nendfacet\n"
-        "facet normal 1 0 0\nouter loop\nvertex 10 0 0\nvertex 10 10 0\nvertex 10 10 10\nendloop\nendfacet\n"
-        "facet normal 1 0 0\nouter loop\nvertex 10 0 0\nvertex 10 10 10\nvertex 10 0 10\nendloop\nendfacet\n"
+        "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 10 10 0\nvertex 10 0 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 10 0\nvertex 10 10 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 10\nvertex 10 0 10\nvertex 10 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 10\nvertex 10 10 10\nvertex 0 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 10 0 0\nvertex 10 0 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 10 0 10\nvertex 0 0 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 1 0\nouter loop\nvertex 0 10 0\nvertex 10 10 10\nvertex 10 10 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 1 0\nouter loop\nvertex 0 10 0\nvertex 0 10 10\nvertex 10 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 10 10\nvertex 0 10 "
+        "0\nendloop\nendfacet\n"
+        "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 10\nvertex 0 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 1 0 0\nouter loop\nvertex 10 0 0\nvertex 10 10 0\nvertex 10 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 1 0 0\nouter loop\nvertex 10 0 0\nvertex 10 10 10\nvertex 10 0 "
+        "10\nendloop\nendfacet\n"
         "endsolid cube\n";
     WriteText(dir / "cube.stl", cube);
   }
-  const auto run = RunCablefit("relax " + Q(dir / "empty.step") + " " + Q(dir / "truncated.step") +
-                               " " + Q(dir / "clips_only.step") + " " + Q(dir / "cube.stl") + " " +
-                               Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") +
-                               " --no-pictures");
+  const auto run =
+      RunCablefit("relax " + Q(dir / "empty.step") + " " + Q(dir / "truncated.step") + " " +
+                  Q(dir / "clips_only.step") + " " + Q(dir / "cube.stl") + " " +
+                  Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") + " --no-pictures");
   EXPECT_EQ(run.exit_code, 1) << run.err;
   std::printf("%s", run.err.c_str());
   for (const char* bad : {"empty.step", "clips_only.step", "cube.stl"}) {
@@ -294,15 +310,16 @@ TEST(RelaxCli, NothingReadableOrBadUsageExitsWithTwo) {
 TEST(RelaxCli, HarnessJsonSupportsAndMaterialAreUsed) {
   const fs::path dir = testing::FreshTempDir("relax_config");
   // An extra pin by point halfway along the hose, the hose's material from a section file.
-  WriteText(dir / "section.json", R"({"format": "cablefit-section/1", "library": ")" +
-                                      (testing::SourceDir() / "samples/materials/automotive.json").string() +
-                                      R"(", "components": [{"name": "w", "wire": "FLRY-B 0.5", "position": [0, 0]}]})");
+  WriteText(dir / "section.json",
+            R"({"format": "cablefit-section/1", "library": ")" +
+                (testing::SourceDir() / "samples/materials/automotive.json").string() +
+                R"(", "components": [{"name": "w", "wire": "FLRY-B 0.5", "position": [0, 0]}]})");
   WriteText(dir / "harness.json", R"({"min_bend_radius_factor": 1000, "cables": {
       "hose": {"supports": [{"kind": "pin", "point": [0.3, -0.27, 0.0]}]},
       "trunk": {"material": {"section": "section.json"}}}})");
-  const auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " +
-                               Q(dir / "out") + " --config " + Q(dir / "harness.json") +
-                               " --no-pictures");
+  const auto run =
+      RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") +
+                  " --config " + Q(dir / "harness.json") + " --no-pictures");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Json j = json::ReadJsonFile((dir / "out/legacy_harness.json").string());
   const Json& hose = CableNamed(j, "hose");
