@@ -153,6 +153,18 @@ int RunRelax(const RelaxArgs& a) {
     bar.Finish(i);
   });
 
+  // A harness.json entry that names no cable is most likely a typo: say so (not a failure,
+  // the same sidecar may serve several drawings).
+  for (const auto& [name, unused] : config.cables) {
+    bool found = false;
+    for (const RelaxedFile& f : files)
+      for (const DrawnCable& c : f.drawing.cables) found = found || c.name == name;
+    if (!found) {
+      bar.PrintLine(stderr, "cablefit: warning: " + config.path + ": cables." + name +
+                                " matches no cable of the inputs");
+    }
+  }
+
   // 2. Relax every cable of every input that was read.
   struct Job {
     int file, cable;
