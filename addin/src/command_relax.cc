@@ -33,6 +33,7 @@ struct RelaxArgs {
   std::string unit = "mm";
   double accuracy = 1e-6;
   bool pictures = true;
+  bool close_ups = false;
 };
 
 double Since(Clock::time_point t0) {
@@ -240,6 +241,7 @@ int RunRelax(const RelaxArgs& a) {
         // another file (not reproduced since); both spawn their own worker threads.
         std::lock_guard lock(cad_mutex);
         WriteDeviationPicture((out / f.picture).string(), f, config);
+        if (a.close_ups) f.close_ups = WriteCloseUpPictures(out.string(), f, config);
         f.times.picture = Since(t0);
       }
       char buf[512];
@@ -301,6 +303,8 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_flag("!--no-pictures", args->pictures, "skip the deviation pictures");
+  cmd->add_flag("--close-ups", args->close_ups,
+                "also one picture per cable: <stem>-<cable>-deviation.png");
   cmd->callback([args, exit_code] { *exit_code = RunRelax(*args); });
 }
 

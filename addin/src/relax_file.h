@@ -40,7 +40,8 @@ struct RelaxedFile {
   std::string error;  ///< the file's one-line problem (without the path); empty if none
   bool read_ok = false;
   StageTimes times;
-  std::string picture;  ///< PNG file name next to the outputs, empty if none
+  std::string picture;                 ///< PNG file name next to the outputs, empty if none
+  std::vector<std::string> close_ups;  ///< per cable PNG names (--close-ups), else empty
 };
 
 /// The diameter `cable` is drawn with in the output: relaxed set-up's, else harness.json's or

@@ -1,7 +1,10 @@
 #include "relax_report.h"
 
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "cablefit/formats/atomic_file.h"
@@ -29,11 +32,15 @@ SupportMarkerKind MarkerOf(SupportKind kind) {
   return SupportMarkerKind::kPin;
 }
 
-Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config) {
+// All cables of `f`, or only cable `only` (>= 0) for a close-up.
+Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only = -1) {
   Scene scene;
-  scene.title = f.stem + ": relaxed cables, colour = distance to the drawn route (grey line)";
+  scene.title =
+      (only >= 0 ? f.stem + ": " + f.drawing.cables[static_cast<size_t>(only)].name : f.stem) +
+      ": relaxed, colour = distance to the drawn route (grey line)";
   scene.gravity = config.gravity;
   for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+    if (only >= 0 && static_cast<int>(i) != only) continue;
     const DrawnCable& drawn = f.drawing.cables[i];
     SceneTube tube;
     tube.name = drawn.name;
@@ -84,9 +91,9 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
 
 }  // namespace
 
-void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,
-                           const HarnessConfig& config) {
-  const Scene scene = HarnessScene(f, config);
+namespace {
+
+void RenderToPng(const std::string& path, const Scene& scene) {
   RenderOptions options;
   options.width = 1400;
   options.height = 900;
@@ -96,6 +103,36 @@ void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,
     image = RenderDeviationViews(scene, options);
   }
   WritePng(path, image);
+}
+
+// A file-name-safe version of a cable name ("cable_ä#2" -> "cable___2").
+std::string FileSafe(const std::string& name) {
+  std::string out;
+  for (const unsigned char c : name) out += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
+  return out.empty() ? "cable" : out;
+}
+
+}  // namespace
+
+void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,
+                           const HarnessConfig& config) {
+  RenderToPng(path, HarnessScene(f, config));
+}
+
+std::vector<std::string> WriteCloseUpPictures(const std::string& dir, const RelaxedFile& f,
+                                              const HarnessConfig& config) {
+  std::vector<std::string> names;
+  std::set<std::string> used;
+  for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+    std::string name = f.stem + "-" + FileSafe(f.drawing.cables[i].name);
+    if (!used.insert(name).second) name.append("-").append(std::to_string(i + 1));
+    used.insert(name);
+    name += "-deviation.png";
+    RenderToPng((std::filesystem::path(dir) / name).string(),
+                HarnessScene(f, config, static_cast<int>(i)));
+    names.push_back(name);
+  }
+  return names;
 }
 
 void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& files,
@@ -136,8 +173,14 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
       << HtmlEscape(f.stem) << "\"></a><figcaption>" << HtmlEscape(f.input)
       << ": relaxed cables coloured by their distance to the drawn route (grey); squares = "
          "clamps, rings = clips, triangles = pins. Outputs: "
-      << HtmlEscape(f.stem) << ".step, " << HtmlEscape(f.stem) << ".json.</figcaption></figure>"
-      << "</section>\n";
+      << HtmlEscape(f.stem) << ".step, " << HtmlEscape(f.stem) << ".json.</figcaption></figure>";
+    for (size_t i = 0; i < f.close_ups.size(); ++i) {
+      h << "<figure><a href=\"" << HtmlEscape(f.close_ups[i]) << "\"><img src=\""
+        << HtmlEscape(f.close_ups[i]) << "\" alt=\"" << HtmlEscape(f.drawing.cables[i].name)
+        << "\"></a><figcaption>" << HtmlEscape(f.drawing.cables[i].name)
+        << " alone</figcaption></figure>";
+    }
+    h << "</section>\n";
   }
   h << PageTail("cablefit relax, " + FormatSeconds(seconds));
   WriteFileAtomically(path, h.str());

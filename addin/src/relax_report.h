@@ -15,6 +15,11 @@ namespace cablefit::addin {
 void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,
                            const HarnessConfig& config);
 
+/// One picture per cable of `f` (that cable alone) into `dir`, named
+/// "<stem>-<cable>-deviation.png" (cable name made file-safe); returns the names by cable.
+std::vector<std::string> WriteCloseUpPictures(const std::string& dir, const RelaxedFile& f,
+                                              const HarnessConfig& config);
+
 /// Writes the self-contained run report (it references only the PNGs next to it).
 void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& files,
                       const HarnessConfig& config, double seconds);

@@ -58,8 +58,9 @@ const Json& CableNamed(const Json& file, const std::string& name) {
 
 TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
   const fs::path out = testing::FreshTempDir("relax_sample");
-  const auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " " +
-                               Q(Sample("branched_tubes.stl")) + " --out " + Q(out));
+  const auto run =
+      RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " " +
+                  Q(Sample("branched_tubes.stl")) + " --out " + Q(out) + " --close-ups");
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
   std::printf("%s", run.out.c_str());  // per-cable lines and per-stage times (benchmark figure)
   for (const char* f : {"legacy_harness.step", "legacy_harness.json",
@@ -122,6 +123,12 @@ TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
   EXPECT_NE(report.find("branch_a"), std::string::npos);
   EXPECT_NE(report.find("legacy_harness-deviation.png"), std::string::npos);
   EXPECT_EQ(report.find("http"), std::string::npos);  // self-contained
+  // --close-ups: one picture per cable, file-safe names ("#" replaced), linked from the report.
+  for (const char* f :
+       {"legacy_harness-hose-deviation.png", "branched_tubes-branched_tubes_1-deviation.png"}) {
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+    EXPECT_NE(report.find(f), std::string::npos) << f;
+  }
 }
 
 // A rod's own equilibrium, drawn exactly, is already relaxed: the solve must return it.
