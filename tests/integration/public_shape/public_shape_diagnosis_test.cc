@@ -64,7 +64,9 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
     // Localised and quantified.
     ASSERT_TRUE(dg.interval && truth.interval) << d;
     EXPECT_GE(IoU(*dg.interval, *truth.interval), 0.4) << d;
-    if (truth.clamp) EXPECT_EQ(dg.clamp, truth.clamp) << d;
+    if (truth.clamp) {
+      EXPECT_EQ(dg.clamp, truth.clamp) << d;
+    }
     for (const char* name : {"ratio", "angle", "curvature", "stiffness", "force", "s"}) {
       if (!truth.parameters.count(name) || !dg.parameters.count(name)) continue;
       EXPECT_NEAR(dg.parameters.at(name), truth.parameters.at(name),
