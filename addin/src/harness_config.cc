@@ -14,12 +14,7 @@ namespace {
 using json::FieldReader;
 using json::Json;
 
-// A typo ("gravty") must be an error, not a silently ignored default.
-void RequireKnownKeys(const FieldReader& r, const std::set<std::string>& allowed) {
-  for (auto it = r.object().begin(); it != r.object().end(); ++it) {
-    if (!allowed.count(it.key())) r.Fail(it.key(), "is not a known field");
-  }
-}
+using json::RequireKnownKeys;
 
 bool OptionalBool(const FieldReader& r, const std::string& key, bool fallback) {
   if (!r.Has(key)) return fallback;

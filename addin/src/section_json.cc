@@ -16,12 +16,7 @@ namespace {
 using json::FieldReader;
 using json::Json;
 
-// Rejects fields outside `allowed` so that a typo ("outer_raduis") is an error, not a default.
-void RequireKnownKeys(const FieldReader& r, const std::set<std::string>& allowed) {
-  for (auto it = r.object().begin(); it != r.object().end(); ++it) {
-    if (!allowed.count(it.key())) r.Fail(it.key(), "is not a known field");
-  }
-}
+using json::RequireKnownKeys;
 
 std::string OptionalString(const FieldReader& r, const std::string& key, std::string fallback) {
   return r.Has(key) ? r.RequireString(key) : fallback;

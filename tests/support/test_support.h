@@ -16,6 +16,9 @@ std::filesystem::path SharedDir();
 /// A fresh empty temporary directory unique to the running test.
 std::filesystem::path FreshTempDir(const std::string& tag);
 
+/// The whole content of a text file ("" when it cannot be read).
+std::string ReadTextFile(const std::filesystem::path& path);
+
 ::testing::AssertionResult MatricesNear(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
                                         double tol);
 

@@ -167,4 +167,10 @@ Json VectorToJson(const Eigen::VectorXd& v) {
   return out;
 }
 
+void RequireKnownKeys(const FieldReader& r, const std::set<std::string>& allowed) {
+  for (auto it = r.object().begin(); it != r.object().end(); ++it) {
+    if (!allowed.count(it.key())) r.Fail(it.key(), "is not a known field");
+  }
+}
+
 }  // namespace cablefit::json

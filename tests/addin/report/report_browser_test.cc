@@ -19,12 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+std::string Slurp(const fs::path& p) { return testing::ReadTextFile(p); }
 
 // Runs headless Chromium on `page`, returns its stderr log; writes `png`.
 std::string Screenshot(const fs::path& page, const fs::path& png, const fs::path& profile) {

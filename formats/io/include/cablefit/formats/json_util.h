@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "cablefit/core/geometry_types.h"
@@ -83,5 +84,9 @@ Json ToJson(const Vec3& v);
 Json MatrixToJson(const Eigen::MatrixXd& m);
 /// A flat array of a vector's entries; non-finite entries become null.
 Json VectorToJson(const Eigen::VectorXd& v);
+
+/// Rejects fields of `r`'s object outside `allowed` (FileError naming the field), so a typo in a
+/// hand-written file is an error, not a silently ignored default.
+void RequireKnownKeys(const FieldReader& r, const std::set<std::string>& allowed);
 
 }  // namespace cablefit::json
