@@ -32,7 +32,7 @@ const std::array<Mat44, 3>& BilinearStrain() {
 void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc) {
   const auto& qk = BilinearStrain();
   for (const RodEdge& e : model.edges) {
-    const int ia = e.a, ib = e.a + 1;
+    const int ia = e.a, ib = e.b;
     const Eigen::Vector4d& qa = state.q[ia];
     const Eigen::Vector4d& qb = state.q[ib];
     const Mat34 l = quat::LeftStrain(qa);   // P = l qb
@@ -57,7 +57,7 @@ void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumu
     for (int k = 0; k < 3; ++k) hab += 2.0 * mom[k] * qk[k];
     acc->hessian->Diag(ia) += ja.transpose() * haa * ja - 0.25 * ga.dot(qa) * Eigen::Matrix3d::Identity();
     acc->hessian->Diag(ib) += jb.transpose() * hbb * jb - 0.25 * gb.dot(qb) * Eigen::Matrix3d::Identity();
-    acc->hessian->Upper(ia) += ja.transpose() * hab * jb;
+    acc->hessian->AddOffDiagonal(ia, ib, ja.transpose() * hab * jb);
   }
 }
 

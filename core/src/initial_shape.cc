@@ -210,7 +210,7 @@ RodState MakeInitialState(const RodModel& model, const Polyline& curve) {
   RodState st;
   st.q.resize(ni);
   for (int i = 0; i < ni; ++i) st.q[i] = quat::FromMatrix(frame[i]);
-  AlignQuaternionSigns(&st);
+  AlignQuaternionSigns(model, &st);
   st.lambda.setZero(model.num_constraints);
   // Continuation start: the supports where this shape has them.
   st.support_position.resize(model.supports.size());
@@ -261,7 +261,7 @@ RodState TransferState(const RodModel& from_model, const RodState& from, const R
     }
     st.q[i] = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
   }
-  AlignQuaternionSigns(&st);
+  AlignQuaternionSigns(to_model, &st);
   st.lambda = from.lambda.size() == to_model.num_constraints
                   ? from.lambda
                   : Eigen::VectorXd(Eigen::VectorXd::Zero(to_model.num_constraints));

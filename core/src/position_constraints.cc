@@ -17,11 +17,11 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> ConstraintProjector(const RodSupport& s
 }
 
 void EvaluatePositionConstraints(const RodModel& model, const RodState& state, Eigen::VectorXd* c,
-                                 Eigen::MatrixXd* jacobian) {
+                                 SparseJacobian* jacobian) {
   const int m = model.num_constraints;
   const int n = static_cast<int>(model.items.size());
   c->setZero(m);
-  if (jacobian) jacobian->setZero(m, 3 * n);
+  std::vector<Eigen::Triplet<double>> triplets;
   const Eigen::Matrix3Xd r = state.NodePositions(model);
   const Eigen::Matrix3d e3x = quat::Skew(Vec3::UnitZ());
   for (size_t k = 0; k < model.supports.size(); ++k) {
@@ -31,18 +31,22 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
     c->segment(sp.constraint_row, sp.constraint_rows) =
         p * (r.col(sp.node) - state.support_position[k]);
     if (!jacobian) continue;
-    const int lo = std::min(sp.node, model.anchor_node), hi = std::max(sp.node, model.anchor_node);
-    for (int j = lo; j < hi; ++j) {
-      const double sign = model.Sign(sp.node, j);
+    model.ForEachPathElement(sp.node, [&](int j, int sign) {
       const int item = model.element_item[j];
-      jacobian->block(sp.constraint_row, 3 * item, sp.constraint_rows, 3) =
-          -sign * model.element_length[j] * p * quat::ToMatrix(state.q[item]) * e3x;
-    }
+      const Eigen::Matrix3d dr = (-sign * model.element_length[j]) * quat::ToMatrix(state.q[item]) * e3x;
+      for (int row = 0; row < sp.constraint_rows; ++row) {
+        const Eigen::RowVector3d v = p.row(row) * dr;
+        for (int d = 0; d < 3; ++d) triplets.emplace_back(sp.constraint_row + row, 3 * item + d, v[d]);
+      }
+    });
   }
+  if (!jacobian) return;
+  jacobian->resize(m, 3 * n);
+  jacobian->setFromTriplets(triplets.begin(), triplets.end());
 }
 
 void AddConstraintCurvature(const RodModel& model, const RodState& state,
-                            const Eigen::VectorXd& lambda, BlockTridiagonal* hessian) {
+                            const Eigen::VectorXd& lambda, BlockTree* hessian) {
   if (model.num_constraints == 0) return;
   std::vector<Vec3> a(model.num_elements, Vec3::Zero());
   for (size_t k = 0; k < model.supports.size(); ++k) {
@@ -50,8 +54,8 @@ void AddConstraintCurvature(const RodModel& model, const RodState& state,
     if (sp.constraint_row < 0) continue;
     const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
     const Vec3 force = p.transpose() * lambda.segment(sp.constraint_row, sp.constraint_rows);
-    const int lo = std::min(sp.node, model.anchor_node), hi = std::max(sp.node, model.anchor_node);
-    for (int j = lo; j < hi; ++j) a[j] += model.Sign(sp.node, j) * model.element_length[j] * force;
+    model.ForEachPathElement(sp.node,
+                             [&](int j, int sign) { a[j] += sign * model.element_length[j] * force; });
   }
   for (int j = 0; j < model.num_elements; ++j) {
     if (a[j].squaredNorm() == 0.0) continue;

@@ -4,8 +4,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
-#include "block_tridiagonal.h"
+#include "block_tree.h"
 #include "cablefit/core/rod_model.h"
 #include "cablefit/core/rod_state.h"
 
@@ -14,13 +15,15 @@ namespace cablefit {
 struct EnergyAccumulator {
   double value = 0.0;          // [J]
   Eigen::VectorXd gradient;    // 3 * items [N m]
-  BlockTridiagonal* hessian = nullptr;  // null: value and gradient only
-  void Reset(int items, BlockTridiagonal* h) {
+  BlockTree* hessian = nullptr;  // null: value and gradient only
+  void Reset(const RodModel& model, BlockTree* h) {
+    const int items = static_cast<int>(model.items.size());
     value = 0.0;
     gradient.setZero(3 * items);
     hessian = h;
     if (h) {
-      if (h->size() != items) h->Resize(items);
+      if (h->size() != items || h->Order() != model.item_order)
+        h->ResizeTree(model.item_parent, model.item_order);
       h->SetZero();
     }
   }
@@ -38,13 +41,16 @@ void AddSupportSpringEnergy(const RodModel& model, const RodState& state, Energy
 /// Adds a . d3(q_item) with its exact gradient and Hessian (shared by loads and constraints).
 void AddLinearTangentTerm(const Eigen::Vector4d& q, const Vec3& a, int item, EnergyAccumulator* acc);
 
-/// Position constraints c (num_constraints) and their Jacobian (num_constraints x 3 items).
+/// num_constraints x 3 items [m], row-major: each row is non-zero along one tree path.
+using SparseJacobian = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+/// Position constraints c (num_constraints) and their Jacobian.
 void EvaluatePositionConstraints(const RodModel& model, const RodState& state, Eigen::VectorXd* c,
-                                 Eigen::MatrixXd* jacobian);
+                                 SparseJacobian* jacobian);
 
 /// Adds the curvature of lambda . c to the Hessian (no value, no gradient).
 void AddConstraintCurvature(const RodModel& model, const RodState& state,
-                            const Eigen::VectorXd& lambda, BlockTridiagonal* hessian);
+                            const Eigen::VectorXd& lambda, BlockTree* hessian);
 
 /// The constraint rows of support `k` as a (rows x 3) projector.
 Eigen::Matrix<double, Eigen::Dynamic, 3> ConstraintProjector(const RodSupport& support,

@@ -7,6 +7,7 @@
 
 #include "cablefit/core/errors.h"
 #include "natural_curvature.h"
+#include "rod_topology.h"
 
 namespace cablefit {
 namespace {
@@ -242,6 +243,7 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
   for (size_t a = 0; a + 1 < model.items.size(); ++a) {
     RodEdge edge;
     edge.a = static_cast<int>(a);
+    edge.b = static_cast<int>(a + 1);
     const RodItem& ia = model.items[a];
     const RodItem& ib = model.items[a + 1];
     edge.ds = ib.s - ia.s;
@@ -268,18 +270,11 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
     model.node_loads.emplace_back(n, pl.force);
     load_sum += pl.force.norm();
   }
-  // Potential -sum_i F_i . r_i with r_i = p_anchor + sum_j Sign(i, j) h_j d3_j.
-  model.load_coefficient.assign(ne, Vec3::Zero());
-  Vec3 suffix = Vec3::Zero();
-  for (int j = ne - 1; j >= model.anchor_node; --j) {
-    suffix += node_force[j + 1];
-    model.load_coefficient[j] = -model.element_length[j] * suffix;
-  }
-  Vec3 prefix = Vec3::Zero();
-  for (int j = 0; j < model.anchor_node; ++j) {
-    prefix += node_force[j];
-    model.load_coefficient[j] = model.element_length[j] * prefix;
-  }
+  model.element_nodes.resize(ne);
+  for (int e = 0; e < ne; ++e) model.element_nodes[e] = {e, e + 1};
+  BuildNodeTree(&model);
+  BuildItemTree(&model);
+  ComputeLoadCoefficients(node_force, &model);
   model.force_scale = std::max({rho * spec.gravity.norm() * L, load_sum,
                                 spec.material.bending_stiffness / (L * L)});
   return model;

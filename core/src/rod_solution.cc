@@ -57,7 +57,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   for (int e = 0; e < nedge; ++e) {
     const RodEdge& edge = model.edges[e];
     const Eigen::Vector4d& qa = state.q[edge.a];
-    const Eigen::Vector4d& qb = state.q[edge.a + 1];
+    const Eigen::Vector4d& qb = state.q[edge.b];
     const Vec3 u = (2.0 / edge.ds) * (quat::LeftStrain(qa) * qb);
     const Vec3 du = u - state.natural_factor * edge.natural;
     const Vec3 m = edge.stiffness * du;
@@ -71,7 +71,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   // Support moments: the generalised force on each support frame's rotation (body frame), as a
   // world moment exerted by the support on the cable.
   EnergyAccumulator acc;
-  acc.Reset(static_cast<int>(model.items.size()), nullptr);
+  acc.Reset(model, nullptr);
   AddBendingEnergy(model, state, &acc);
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];

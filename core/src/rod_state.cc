@@ -6,14 +6,17 @@
 namespace cablefit {
 
 Eigen::Matrix3Xd RodState::NodePositions(const RodModel& model) const {
-  const int ne = model.num_elements;
-  Eigen::Matrix3Xd r(3, ne + 1);
-  const int a = model.anchor_node;
-  r.col(a) = support_position[model.anchor_support];
-  for (int j = a; j < ne; ++j)
-    r.col(j + 1) = r.col(j) + model.element_length[j] * quat::D3(q[model.element_item[j]]);
-  for (int j = a - 1; j >= 0; --j)
-    r.col(j) = r.col(j + 1) - model.element_length[j] * quat::D3(q[model.element_item[j]]);
+  Eigen::Matrix3Xd r(3, model.num_nodes());
+  for (int node : model.node_order) {
+    const int parent = model.node_parent[node];
+    if (parent < 0) {
+      r.col(node) = support_position[model.anchor_support];
+      continue;
+    }
+    const int j = model.node_parent_element[node];
+    r.col(node) = r.col(parent) + (model.node_parent_sign[node] * model.element_length[j]) *
+                                      quat::D3(q[model.element_item[j]]);
+  }
   return r;
 }
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "block_tridiagonal.h"
+#include "block_tree.h"
 #include "cablefit/core/errors.h"
 #include "quaternion.h"
 #include "rod_energy.h"
@@ -22,8 +22,8 @@ struct Evaluation {
   double energy = 0.0;
   Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
   Eigen::VectorXd c;
-  Eigen::MatrixXd jac;
-  BlockTridiagonal hessian;
+  SparseJacobian jac;
+  BlockTree hessian;
 };
 
 std::vector<char> FreeMask(const RodModel& model) {
@@ -38,7 +38,7 @@ void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
               const Eigen::VectorXd* lambda, const std::vector<char>& free, Evaluation* ev) {
   EnergyAccumulator acc;
   const int n = static_cast<int>(model.items.size());
-  acc.Reset(n, with_hessian ? &ev->hessian : nullptr);
+  acc.Reset(model, with_hessian ? &ev->hessian : nullptr);
   AddBendingEnergy(model, state, &acc);
   AddLoadEnergy(model, state, &acc);
   AddSupportSpringEnergy(model, state, &acc);
@@ -47,8 +47,7 @@ void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
   for (int k = 0; k < 3 * n; ++k)
     if (!free[k]) ev->gradient[k] = 0.0;
   EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
-  for (int k = 0; k < 3 * n; ++k)
-    if (!free[k]) ev->jac.col(k).setZero();
+  ev->jac.prune([&free](Eigen::Index, Eigen::Index col, double) { return free[col] != 0; });
   if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
 }
 
@@ -58,21 +57,24 @@ double Merit(const RodModel& model, const RodState& state, double nu, const std:
   return ev.energy + nu * ev.c.lpNorm<1>();
 }
 
-// Replaces masked rows/columns by the identity so the chain keeps one uniform block structure.
-void MaskHessian(const std::vector<char>& free, BlockTridiagonal* h) {
+// Replaces masked rows/columns by the identity so the tree keeps one uniform block structure.
+void MaskHessian(const std::vector<char>& free, BlockTree* h) {
   const int n = h->size();
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < n; ++i) {
+    const int p = h->Parent(i);
     for (int d = 0; d < 3; ++d) {
-      if (free[3 * i + d]) continue;
-      h->Diag(i).row(d).setZero();
-      h->Diag(i).col(d).setZero();
-      h->Diag(i)(d, d) = 1.0;
-      if (i + 1 < n) h->Upper(i).row(d).setZero();
-      if (i > 0) h->Upper(i - 1).col(d).setZero();
+      if (!free[3 * i + d]) {
+        h->Diag(i).row(d).setZero();
+        h->Diag(i).col(d).setZero();
+        h->Diag(i)(d, d) = 1.0;
+        if (p >= 0) h->Coupling(i).row(d).setZero();
+      }
+      if (p >= 0 && !free[3 * p + d]) h->Coupling(i).col(d).setZero();
     }
+  }
 }
 
-void ShiftFree(const std::vector<char>& free, double mu, BlockTridiagonal* h) {
+void ShiftFree(const std::vector<char>& free, double mu, BlockTree* h) {
   for (int i = 0; i < h->size(); ++i)
     for (int d = 0; d < 3; ++d)
       if (free[3 * i + d]) h->Diag(i)(d, d) += mu;
@@ -84,7 +86,7 @@ void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha,
     if (th.squaredNorm() == 0.0) continue;
     state->q[i] = quat::Multiply(state->q[i], quat::Exp(th)).normalized();
   }
-  AlignQuaternionSigns(state);
+  AlignQuaternionSigns(model, state);
 }
 
 // Inertia of the KKT matrix [H C^T; C 0] = inertia(H) + inertia(-C H^-1 C^T): the reduced
@@ -98,12 +100,12 @@ struct KktSolve {
   Eigen::VectorXd lambda;  // m
 };
 
-KktSolve SolveKkt(const BlockTridiagonal& h_masked, const Evaluation& ev,
+KktSolve SolveKkt(const BlockTree& h_masked, const Evaluation& ev,
                   const std::vector<char>& free, double mu) {
   KktSolve out;
-  BlockTridiagonal h = h_masked;
+  BlockTree h = h_masked;
   if (mu != 0.0) ShiftFree(free, mu, &h);
-  BlockTridiagonalLdlt ldlt;
+  BlockTreeLdlt ldlt;
   const bool factored = ldlt.Factorize(h, 0.0);
   out.min_pivot = ldlt.MinPivotEigenvalue();
   if (!factored) return out;
@@ -138,7 +140,7 @@ KktSolve SolveKkt(const BlockTridiagonal& h_masked, const Evaluation& ev,
   return out;
 }
 
-double HessianScale(const BlockTridiagonal& h) {
+double HessianScale(const BlockTree& h) {
   double s = 0.0;
   for (int i = 0; i < h.size(); ++i) s = std::max(s, h.Diag(i).diagonal().cwiseAbs().maxCoeff());
   return std::max(s, 1e-300);
@@ -155,16 +157,16 @@ KktEvaluation EvaluateKkt(const RodModel& model, const RodState& state,
   out.energy = ev.energy;
   out.gradient = ev.gradient;
   out.constraints = ev.c;
-  out.jacobian = ev.jac;
+  out.jacobian = Eigen::MatrixXd(ev.jac);
   if (dense_hessian) {
     const int n = ev.hessian.size();
     out.hessian = Eigen::MatrixXd::Zero(3 * n, 3 * n);
     for (int i = 0; i < n; ++i) {
       out.hessian.block<3, 3>(3 * i, 3 * i) = ev.hessian.Diag(i);
-      if (i + 1 < n) {
-        out.hessian.block<3, 3>(3 * i, 3 * i + 3) = ev.hessian.Upper(i);
-        out.hessian.block<3, 3>(3 * i + 3, 3 * i) = ev.hessian.Upper(i).transpose();
-      }
+      const int p = ev.hessian.Parent(i);
+      if (p < 0) continue;
+      out.hessian.block<3, 3>(3 * i, 3 * p) = ev.hessian.Coupling(i);
+      out.hessian.block<3, 3>(3 * p, 3 * i) = ev.hessian.Coupling(i).transpose();
     }
   }
   return out;

@@ -45,12 +45,15 @@ void ApplySupportTargets(const RodModel& model, RodState* state) {
       state->q[i] = quat::Multiply(qt, quat::Exp(Eigen::Vector3d(0, 0, angle)));
     }
   }
-  AlignQuaternionSigns(state);
+  AlignQuaternionSigns(model, state);
 }
 
-void AlignQuaternionSigns(RodState* state) {
-  for (size_t i = 1; i < state->q.size(); ++i)
-    if (state->q[i].dot(state->q[i - 1]) < 0) state->q[i] = -state->q[i];
+void AlignQuaternionSigns(const RodModel& model, RodState* state) {
+  // Roots first, so every frame is compared with an already aligned neighbour.
+  for (auto it = model.item_order.rbegin(); it != model.item_order.rend(); ++it) {
+    const int p = model.item_parent[*it];
+    if (p >= 0 && state->q[*it].dot(state->q[p]) < 0) state->q[*it] = -state->q[*it];
+  }
 }
 
 }  // namespace cablefit

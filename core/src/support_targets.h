@@ -20,6 +20,6 @@ void ApplySupportTargets(const RodModel& model, RodState* state);
 
 /// Flips signs so that neighbouring quaternions have a non-negative dot product (q and -q are
 /// one rotation, but the strain measure Im(conj(q_a) q_b) needs consistent signs).
-void AlignQuaternionSigns(RodState* state);
+void AlignQuaternionSigns(const RodModel& model, RodState* state);
 
 }  // namespace cablefit

@@ -11,9 +11,14 @@
 // u = (2/ds) Im(conj(q_a) q_b), second-order accurate in h, with an error expansion in even
 // powers of h that Richardson extrapolation exploits. Bending couples only neighbours, so the
 // Hessian is block-tridiagonal (3x3 blocks) and a Newton step costs O(n).
+//
+// The same model holds a rod network (a harness tree, see network_model.h): elements then form
+// a tree of nodes rooted at the anchor, positions are sums along tree paths, and the frame
+// samples form a tree too (junction frames join branches), so the Hessian is a block tree.
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -36,7 +41,8 @@ struct RodItem {
 
 /// Bending/twist coupling between items a and a+1.
 struct RodEdge {
-  int a = 0;                     // item index; the other item is a + 1
+  int a = 0;                     // item index (strain measured from a to b)
+  int b = 1;                     // item index; a + 1 on a single rod
   double ds = 0.0;               // [m] distance between the two samples
   double s = 0.0;                // [m] arc length of the edge centre
   Mat3 stiffness = Mat3::Zero();  // [N m^2] material frame (d1, d2, d3)
@@ -67,17 +73,31 @@ struct RodModel {
   int anchor_support = 0;  // the position support whose node is fixed by construction
   int anchor_node = 0;
   int num_constraints = 0;  // position-constraint rows
+  // Topology. element_nodes[j] = (from, to): r_to = r_from + h_j d3_j. Nodes form a tree rooted
+  // at anchor_node: node_parent (-1 at the anchor), the element joining a node to its parent,
+  // and its sign (+1: r_node = r_parent + h d3, -1: r_node = r_parent - h d3); node_order lists
+  // parents before children. Frame samples form a tree for the Hessian: item_parent, and
+  // item_order lists every item before its parent (elimination order).
+  std::vector<std::array<int, 2>> element_nodes;
+  std::vector<int> node_parent;
+  std::vector<int> node_parent_element;
+  std::vector<int> node_parent_sign;
+  std::vector<int> node_order;
+  std::vector<int> item_parent;
+  std::vector<int> item_order;
   /// Per element: coefficient vector a_j so that the potential of gravity and dead point loads is
   /// sum_j a_j . d3_j (+ const) at load factor 1 [N m].
   std::vector<Vec3> load_coefficient;
   Eigen::VectorXd node_mass;  // (num_elements + 1) [kg] lumped
   std::vector<std::pair<int, Vec3>> node_loads;  // dead point loads at nodes [N]
   double force_scale = 1.0;   // [N] characteristic force for tolerances
-  /// +1 if node i lies after element j as seen from the anchor, -1 before, 0 otherwise.
-  int Sign(int node, int element) const {
-    if (element >= anchor_node && element < node) return 1;
-    if (element < anchor_node && element >= node) return -1;
-    return 0;
+  int num_nodes() const { return static_cast<int>(node_parent.size()); }
+  /// Calls f(element, sign) for every element on the path from the anchor to `node`, where
+  /// r_node = r_anchor + sum sign * h_element * d3_element.
+  template <class F>
+  void ForEachPathElement(int node, F&& f) const {
+    for (int n = node; node_parent[n] >= 0; n = node_parent[n])
+      f(node_parent_element[n], node_parent_sign[n]);
   }
 };
 
