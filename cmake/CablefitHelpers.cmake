@@ -6,6 +6,8 @@ function(cablefit_library)
   file(GLOB _srcs CONFIGURE_DEPENDS ${L_DIR}/src/*.cc)
   add_library(${L_NAME} STATIC ${_srcs})
   add_library(${L_ALIAS} ALIAS ${L_NAME})
+  # Position-independent so the FreeCAD workbench's Python module can link the same libraries.
+  set_target_properties(${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_include_directories(${L_NAME} PUBLIC ${L_DIR}/include PRIVATE ${L_DIR}/src)
   target_link_libraries(${L_NAME} PUBLIC ${L_DEPS} PRIVATE ${L_PRIVATE_DEPS} cablefit_warnings)
 endfunction()

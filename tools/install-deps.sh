@@ -12,7 +12,7 @@ pkgs=(build-essential cmake ninja-build pkg-config git python3-dev
 for arg in "$@"; do
   case "$arg" in
     --with-browser) pkgs+=(chromium chromium-driver) ;;
-    --with-freecad) pkgs+=(freecad) ;;
+    --with-freecad) pkgs+=(freecad xvfb xauth) ;;
     *) echo "install-deps: unknown option $arg" >&2; exit 2 ;;
   esac
 done

@@ -1,0 +1,259 @@
+// The facade over addin/src: the same read -> set up -> relax -> write sequence as
+// command_relax.cc (one input, cables in order, no worker pool: FreeCAD calls it from its GUI
+// thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
+#include "cablefit_facade.h"
+
+#include <chrono>
+#include <exception>
+#include <filesystem>
+
+#include "cablefit/core/errors.h"
+#include "cablefit/formats/colour_map.h"
+#include "diagnose_case.h"
+#include "diagnose_output.h"
+#include "harness_config.h"
+#include "relax_cable.h"
+#include "relax_file.h"
+#include "relax_report.h"
+#include "report_case.h"
+
+namespace cablefit::freecad {
+
+struct RelaxedFile {
+  addin::RelaxedFile file;
+  addin::HarnessConfig config;
+};
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// The one-line problem of an exception, without the file name when it is a FileError (the
+// caller knows which file it passed).
+std::string ProblemOf(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const FileError& fe) {
+    return fe.problem();
+  } catch (const std::exception& ex) {
+    return ex.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
+CableSummary Summarise(const addin::RelaxedFile& f, const addin::HarnessConfig& config, int i) {
+  const size_t k = static_cast<size_t>(i);
+  const DrawnCable& drawn = f.drawing.cables[k];
+  CableSummary c;
+  c.name = drawn.name;
+  c.drawn = drawn.centreline.points;
+  c.diameter = addin::OutputDiameter(f, i, config);
+  if (!f.cables[k]) {
+    c.error = f.cable_errors[k];
+    c.length = drawn.centreline.size() > 0 ? drawn.centreline.s[drawn.centreline.size() - 1] : 0;
+    return c;
+  }
+  const addin::CableRelaxation& r = *f.cables[k];
+  const RodSpec& spec = r.setup.spec;
+  c.ok = true;
+  c.length = spec.length;
+  c.drawn = r.setup.route.points;
+  c.s = r.relaxed.s;
+  c.relaxed = r.relaxed.points;
+  c.deviation = r.deviation;
+  c.max_deviation = r.max_deviation;
+  c.rms_deviation = r.rms_deviation;
+  c.max_deviation_s = r.max_deviation_s;
+  c.min_bend_radius = r.min_bend_radius;
+  c.bend_limit = r.bend_limit;
+  c.bend_flag = r.bend_flag;
+  c.stable = r.result.solution.summary.stable;
+  c.material_source = r.setup.material_source;
+  c.material_defaulted = r.setup.material_defaulted;
+  c.bending_stiffness = spec.material.bending_stiffness;
+  c.linear_density = spec.material.linear_density;
+  c.gravity = spec.gravity;
+  for (size_t j = 0; j < spec.supports.size(); ++j) {
+    const SupportSpec& sp = spec.supports[j];
+    c.supports.push_back(
+        {ToString(sp.kind), r.setup.support_origin[j], sp.s, sp.position, sp.sliding});
+  }
+  c.notes = r.setup.notes;
+  c.iterations = r.result.newton_iterations;
+  c.seconds = r.seconds;
+  return c;
+}
+
+}  // namespace
+
+HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::string& config_path,
+                                         double accuracy, const std::string& mesh_unit,
+                                         const ProgressCallback& progress) {
+  auto state = std::make_shared<RelaxedFile>();
+  addin::HarnessConfig& config = state->config;
+  if (!config_path.empty()) config = addin::ReadHarnessConfig(config_path);
+  SimulationOptions options;
+  options.accuracy = accuracy;
+  std::string why;
+  if (!options.IsValid(&why)) throw InvalidInput("accuracy: " + why);
+
+  addin::RelaxedFile& f = state->file;
+  f.input = input;
+  f.stem = fs::path(input).stem().string();
+  bool cancelled = progress && !progress(0.0, "read " + fs::path(input).filename().string());
+  auto t0 = Clock::now();
+  f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
+  f.read_ok = true;
+  f.times.read = Since(t0);
+  const size_t n = f.drawing.cables.size();
+  f.cables.resize(n);
+  f.cable_errors.resize(n);
+
+  std::vector<addin::OrientedBox> boxes;
+  for (const DrawnSolid& s : f.drawing.solids) {
+    addin::OrientedBox box;  // a solid without tessellation holds nothing (empty box)
+    if (s.mesh.vertices.cols() > 0) box = addin::BoundingBoxOf(s.mesh);
+    boxes.push_back(box);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const std::string& name = f.drawing.cables[i].name;
+    // Continuation steps report inside the cable's share of the bar and may cancel too.
+    options.statics.progress = [&](double fraction, const std::string& stage) {
+      if (!progress) return true;
+      cancelled = cancelled || !progress((i + 0.1 + 0.8 * fraction) / n, name + ": " + stage);
+      return !cancelled;
+    };
+    if (!cancelled && progress) cancelled = !progress((i + 0.05) / n, "relax " + name);
+    if (cancelled) {
+      f.cable_errors[i] = "cancelled";
+      continue;
+    }
+    t0 = Clock::now();
+    try {
+      addin::CableSetup setup = addin::SetUpCable(f.drawing, static_cast<int>(i), boxes, config);
+      addin::CableRelaxation r =
+          addin::RelaxCable(std::move(setup), options, config.min_bend_radius_factor);
+      if (cancelled) {
+        f.cable_errors[i] = "cancelled";
+      } else if (!r.result.converged) {
+        f.cable_errors[i] = "the solver did not converge: " + r.result.solution.summary.message;
+      } else {
+        f.cables[i] = std::move(r);
+      }
+    } catch (...) {
+      f.cable_errors[i] = ProblemOf(std::current_exception());
+    }
+    f.times.relax += Since(t0);
+  }
+  if (progress) progress(1.0, cancelled ? "cancelled" : "relaxed");
+
+  HarnessRelaxation out;
+  out.file_ = state;
+  for (size_t i = 0; i < n; ++i) out.cables_.push_back(Summarise(f, config, static_cast<int>(i)));
+  return out;
+}
+
+std::vector<std::string> HarnessRelaxation::solid_names() const {
+  std::vector<std::string> names;
+  for (const DrawnSolid& s : file_->file.drawing.solids) names.push_back(s.name);
+  return names;
+}
+
+double HarnessRelaxation::read_seconds() const { return file_->file.times.read; }
+
+void HarnessRelaxation::WriteStep(const std::string& path, bool with_solids, int cable) const {
+  const addin::RelaxedFile& f = file_->file;
+  if (with_solids && cable < 0) {
+    addin::WriteRelaxedStepFile(path, f, file_->config);
+    return;
+  }
+  addin::RelaxedFile part = f;  // the solids' shapes are shared, not copied
+  if (!with_solids) part.drawing.solids.clear();
+  if (cable >= 0) {
+    if (cable >= static_cast<int>(f.cables.size())) {
+      throw InvalidInput("cable " + std::to_string(cable) + " does not exist (" +
+                         std::to_string(f.cables.size()) + " cables)");
+    }
+    const size_t k = static_cast<size_t>(cable);
+    part.drawing.cables = {f.drawing.cables[k]};
+    part.drawing.junctions.clear();
+    part.cables = {f.cables[k]};
+    part.cable_errors = {f.cable_errors[k]};
+  }
+  addin::WriteRelaxedStepFile(path, part, file_->config);
+}
+
+std::string HarnessRelaxation::WriteReport(const std::string& dir, bool pictures) const {
+  addin::RelaxedFile f = file_->file;
+  const addin::HarnessConfig& config = file_->config;
+  const fs::path out(dir);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw FileError(dir, "cannot create folder: " + ec.message());
+  auto t0 = Clock::now();
+  json::WriteJsonFile((out / (f.stem + ".json")).string(), addin::RelaxedFileToJson(f, config));
+  f.times.json = Since(t0);
+  t0 = Clock::now();
+  addin::WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config);
+  f.times.step = Since(t0);
+  if (pictures) {
+    t0 = Clock::now();
+    f.picture = f.stem + "-deviation.png";
+    addin::WriteDeviationPicture((out / f.picture).string(), f, config);
+    f.times.picture = Since(t0);
+  }
+  const std::string report = (out / "report.html").string();
+  addin::WriteRelaxReport(report, {f}, config, f.times.read + f.times.relax);
+  return report;
+}
+
+std::array<double, 3> DeviationColour(double value, double lo, double hi) {
+  ColourScale scale;
+  scale.min = lo;
+  scale.max = hi;
+  std::string why;
+  if (!scale.IsValid(&why)) throw InvalidInput("colour scale: " + why);
+  const Rgb c = scale.Map(value);
+  return {c.r / 255.0, c.g / 255.0, c.b / 255.0};
+}
+
+DiagnosisSummary DiagnoseRecording(const std::string& case_file, const std::string& report_dir,
+                                   const ProgressCallback& progress) {
+  addin::DiagnoseCaseOptions options;
+  const addin::DiagnosedCase d = addin::DiagnoseCase(case_file, options, progress);
+  DiagnosisSummary s;
+  s.name = d.recording.name;
+  s.kind = addin::ToString(d.kind);
+  s.effect = d.effect;
+  s.confidence = d.confidence;
+  s.interval = d.interval;
+  s.parameters = d.parameters;
+  s.candidates = d.candidates;
+  s.baseline_max = d.baseline.max;
+  s.fitted_max = d.fitted.max;
+  s.deviation_unit = d.deviation_unit;
+  s.explanation = d.explanation;
+  s.observation_source = d.observation_source;
+  s.scan_points = d.scan_points;
+  s.observation = d.observation.points;
+  if (d.shape) {
+    s.nominal = d.shape->nominal_solution.centerline.points;
+    s.fitted = d.shape->fitted_solution.centerline.points;
+  }
+  s.notes = d.notes;
+  s.seconds = d.seconds;
+  if (!report_dir.empty()) {
+    addin::WriteDiagnosisFiles(report_dir, d);
+    addin::WriteCaseReport(report_dir, d);
+    s.report = (fs::path(report_dir) / "report.html").string();
+  }
+  return s;
+}
+
+}  // namespace cablefit::freecad

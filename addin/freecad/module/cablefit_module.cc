@@ -1,0 +1,170 @@
+// The Python module `cablefit_native` the FreeCAD workbench imports: bindings of
+// cablefit_facade.h only. Lengths in metres as everywhere in cablefit (the workbench converts
+// from FreeCAD's millimetres); point sets are numpy arrays of shape (3, n).
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+
+#include "cablefit/core/errors.h"
+#include "cablefit_facade.h"
+
+namespace py = pybind11;
+using cablefit::freecad::CableSummary;
+using cablefit::freecad::DiagnosisSummary;
+using cablefit::freecad::HarnessRelaxation;
+using cablefit::freecad::SupportSummary;
+
+namespace {
+
+// A Python progress callable as the core's ProgressCallback: a falsy return value cancels.
+// An exception raised by the callable (e.g. FreeCAD's progress indicator when the user pressed
+// Esc) cancels too and is re-raised once the C++ call has returned, so no Python error crosses
+// the solver.
+class PythonProgress {
+ public:
+  explicit PythonProgress(py::object callable) : callable_(std::move(callable)) {}
+
+  cablefit::ProgressCallback Callback() {
+    if (callable_.is_none()) return {};
+    return [this](double fraction, const std::string& stage) {
+      if (error_) return false;
+      try {
+        py::object r = callable_(fraction, stage);
+        return r.is_none() || r.cast<bool>();
+      } catch (py::error_already_set& e) {
+        error_.emplace(std::move(e));
+        return false;
+      }
+    };
+  }
+  void RethrowIfFailed() {
+    if (error_) {
+      py::error_already_set e = std::move(*error_);
+      error_.reset();
+      throw e;
+    }
+  }
+
+ private:
+  py::object callable_;
+  std::optional<py::error_already_set> error_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(cablefit_native, m) {
+  m.doc() = "cablefit relax and diagnose for the FreeCAD workbench (lengths in metres)";
+  static py::exception<cablefit::InvalidInput> error(m, "Error", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const cablefit::InvalidInput& e) {
+      error(e.what());  // FileError's what() already names the file
+    }
+  });
+
+  py::class_<SupportSummary>(m, "Support")
+      .def_readonly("kind", &SupportSummary::kind)
+      .def_readonly("origin", &SupportSummary::origin)
+      .def_readonly("s", &SupportSummary::s)
+      .def_readonly("position", &SupportSummary::position)
+      .def_readonly("sliding", &SupportSummary::sliding);
+
+  py::class_<CableSummary>(m, "Cable")
+      .def_readonly("name", &CableSummary::name)
+      .def_readonly("ok", &CableSummary::ok)
+      .def_readonly("error", &CableSummary::error)
+      .def_readonly("length", &CableSummary::length)
+      .def_readonly("diameter", &CableSummary::diameter)
+      .def_readonly("drawn", &CableSummary::drawn)
+      .def_readonly("s", &CableSummary::s)
+      .def_readonly("relaxed", &CableSummary::relaxed)
+      .def_readonly("deviation", &CableSummary::deviation)
+      .def_readonly("max_deviation", &CableSummary::max_deviation)
+      .def_readonly("rms_deviation", &CableSummary::rms_deviation)
+      .def_readonly("max_deviation_s", &CableSummary::max_deviation_s)
+      .def_readonly("min_bend_radius", &CableSummary::min_bend_radius)
+      .def_readonly("bend_limit", &CableSummary::bend_limit)
+      .def_readonly("bend_flag", &CableSummary::bend_flag)
+      .def_readonly("stable", &CableSummary::stable)
+      .def_readonly("material_source", &CableSummary::material_source)
+      .def_readonly("material_defaulted", &CableSummary::material_defaulted)
+      .def_readonly("bending_stiffness", &CableSummary::bending_stiffness)
+      .def_readonly("linear_density", &CableSummary::linear_density)
+      .def_readonly("gravity", &CableSummary::gravity)
+      .def_readonly("supports", &CableSummary::supports)
+      .def_readonly("notes", &CableSummary::notes)
+      .def_readonly("iterations", &CableSummary::iterations)
+      .def_readonly("seconds", &CableSummary::seconds);
+
+  py::class_<HarnessRelaxation>(m, "Relaxation")
+      .def_property_readonly("cables", &HarnessRelaxation::cables)
+      .def_property_readonly("solid_names", &HarnessRelaxation::solid_names)
+      .def_property_readonly("read_seconds", &HarnessRelaxation::read_seconds)
+      .def("write_step", &HarnessRelaxation::WriteStep, py::arg("path"),
+           py::arg("with_solids") = true, py::arg("cable") = -1,
+           "Relaxed tubes (all, or only number `cable`) and the input's other solids (unless "
+           "with_solids is False) as STEP AP242 in mm")
+      .def("write_report", &HarnessRelaxation::WriteReport, py::arg("dir"),
+           py::arg("pictures") = true,
+           "What `cablefit relax --out DIR` writes for this input; returns report.html's path");
+
+  m.def(
+      "relax",
+      [](const std::string& input, const std::string& config, double accuracy,
+         const std::string& mesh_unit, py::object progress) {
+        PythonProgress p(std::move(progress));
+        HarnessRelaxation r = HarnessRelaxation::Run(input, config, accuracy, mesh_unit, p.Callback());
+        p.RethrowIfFailed();
+        return r;
+      },
+      py::arg("input"), py::arg("config") = "", py::arg("accuracy") = 1e-6,
+      py::arg("mesh_unit") = "mm", py::arg("progress") = py::none(),
+      "Relax every cable of a STEP/IGES/mesh file like `cablefit relax INPUT --config CONFIG`. "
+      "progress(fraction, stage) returning False (or raising) cancels.");
+
+  m.def("deviation_colour", &cablefit::freecad::DeviationColour, py::arg("value"), py::arg("lo"),
+        py::arg("hi"), "sRGB (r, g, b) in [0, 1] of value on the relax pictures' colour scale");
+
+  py::class_<DiagnosisSummary>(m, "Diagnosis")
+      .def_readonly("name", &DiagnosisSummary::name)
+      .def_readonly("kind", &DiagnosisSummary::kind)
+      .def_readonly("effect", &DiagnosisSummary::effect)
+      .def_readonly("confidence", &DiagnosisSummary::confidence)
+      .def_readonly("interval", &DiagnosisSummary::interval)
+      .def_readonly("parameters", &DiagnosisSummary::parameters)
+      .def_readonly("candidates", &DiagnosisSummary::candidates)
+      .def_readonly("baseline_max", &DiagnosisSummary::baseline_max)
+      .def_readonly("fitted_max", &DiagnosisSummary::fitted_max)
+      .def_readonly("deviation_unit", &DiagnosisSummary::deviation_unit)
+      .def_readonly("explanation", &DiagnosisSummary::explanation)
+      .def_readonly("observation_source", &DiagnosisSummary::observation_source)
+      .def_readonly("scan_points", &DiagnosisSummary::scan_points)
+      .def_readonly("observation", &DiagnosisSummary::observation)
+      .def_readonly("nominal", &DiagnosisSummary::nominal)
+      .def_readonly("fitted", &DiagnosisSummary::fitted)
+      .def_readonly("notes", &DiagnosisSummary::notes)
+      .def_readonly("seconds", &DiagnosisSummary::seconds)
+      .def_readonly("report", &DiagnosisSummary::report);
+
+  m.def(
+      "diagnose",
+      [](const std::string& case_file, const std::string& report_dir, py::object progress) {
+        PythonProgress p(std::move(progress));
+        try {
+          DiagnosisSummary d =
+              cablefit::freecad::DiagnoseRecording(case_file, report_dir, p.Callback());
+          p.RethrowIfFailed();
+          return d;
+        } catch (const cablefit::InvalidInput&) {
+          p.RethrowIfFailed();  // a cancel from Python surfaces as the Python error
+          throw;
+        }
+      },
+      py::arg("case_file"), py::arg("report_dir") = "", py::arg("progress") = py::none(),
+      "Diagnose a recording case.json like `cablefit diagnose`; with report_dir also write "
+      "diagnosis.json, model curves and report.html there.");
+}

@@ -1,0 +1,192 @@
+# The workbench's GUI commands. Each one only collects the selection / a file name and calls the
+# non-GUI function the headless tests call too (cable.py, colours.py, diagnose.py, engine.py);
+# every failure goes to the report view, never out of Activated (FreeCAD would only print a
+# traceback and the user would see nothing happen).
+import os
+
+import FreeCAD
+import FreeCADGui
+
+from . import cable, colours, diagnose, engine, gui_progress
+from .view_providers import icon
+
+
+def _guarded(title, fn):
+    FreeCAD.ActiveDocument.openTransaction(title)
+    try:
+        fn()
+        FreeCAD.ActiveDocument.commitTransaction()
+    except engine.Cancelled:
+        FreeCAD.ActiveDocument.abortTransaction()
+        FreeCAD.Console.PrintWarning("cablefit: %s cancelled\n" % title)
+    except Exception as e:  # noqa: BLE001 - reported, the document stays usable
+        FreeCAD.ActiveDocument.abortTransaction()
+        FreeCAD.Console.PrintError("cablefit: %s: %s\n" % (title, e))
+
+
+def _selected_cables():
+    return [o for o in FreeCADGui.Selection.getSelection() if cable.is_cable(o)]
+
+
+def _has_doc():
+    return FreeCAD.ActiveDocument is not None
+
+
+class MakePhysical:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_make_physical"), "MenuText": "Make physical",
+                "ToolTip": "Turn the selected edges, wires or tube solids into Cable objects "
+                           "relaxed under gravity (properties: diameter, material, supports, "
+                           "gravity; recomputed on change)"}
+
+    def IsActive(self):
+        return _has_doc() and bool(FreeCADGui.Selection.getSelectionEx())
+
+    def Activated(self):
+        def run():
+            for sel in FreeCADGui.Selection.getSelectionEx():
+                if cable.is_cable(sel.Object):
+                    continue
+                subs = [n for n in sel.SubElementNames if n.startswith("Edge")]
+                cable.make_cable(sel.Object, subs)
+        _guarded("Make physical", run)
+
+
+class AddSupport:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_add_support"), "MenuText": "Add support",
+                "ToolTip": "Select a Cable and either a solid it passes through (clip there) or "
+                           "a picked point (clamp, clip or pin at the nearest route point)"}
+
+    def IsActive(self):
+        return _has_doc() and bool(_selected_cables())
+
+    def Activated(self):
+        def run():
+            from PySide import QtGui
+            target = _selected_cables()[0]
+            for sel in FreeCADGui.Selection.getSelectionEx():
+                if sel.Object == target:
+                    continue
+                if sel.Object.isDerivedFrom("Part::Feature") and sel.Object.Shape.Solids:
+                    cable.add_support(target, "clip", solid=sel.Object)
+                    return
+                if sel.PickedPoints:
+                    kind, ok = QtGui.QInputDialog.getItem(
+                        None, "Add support", "Support kind", cable.SUPPORT_KINDS, 1, False)
+                    if ok:
+                        cable.add_support(target, kind, point=sel.PickedPoints[-1])
+                    return
+            raise ValueError("select a solid the cable passes through or pick a point as well")
+        _guarded("Add support", run)
+
+
+class RelaxHarness:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_relax"), "MenuText": "Relax harness",
+                "ToolTip": "Relax every Cable of the document together (ends that meet form "
+                           "a junction). Esc cancels; problems go to the report view"}
+
+    def IsActive(self):
+        return _has_doc() and bool(cable.cables_of(FreeCAD.ActiveDocument))
+
+    def Activated(self):
+        def run():
+            bar = gui_progress.ProgressBar("cablefit: relax harness")
+            try:
+                r = cable.relax_harness(FreeCAD.ActiveDocument, bar)
+            finally:
+                bar.close()
+            for c in r.cables:
+                if c.ok:
+                    FreeCAD.Console.PrintMessage(
+                        "cablefit: %s: sag %.3f mm, min bend radius %.1f mm, %.0f ms\n" %
+                        (c.name, c.max_deviation * 1e3, c.min_bend_radius * 1e3, c.seconds * 1e3))
+                else:
+                    FreeCAD.Console.PrintError("cablefit: %s: %s\n" % (c.name, c.error))
+            FreeCAD.ActiveDocument.recompute()
+        _guarded("Relax harness", run)
+
+
+class DeviationColours:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_deviation"), "MenuText": "Deviation colours",
+                "ToolTip": "Colour the selected (or all) relaxed cables by their distance to "
+                           "the drawn route, with a legend"}
+
+    def IsActive(self):
+        return _has_doc() and bool(cable.cables_of(FreeCAD.ActiveDocument))
+
+    def Activated(self):
+        def run():
+            colours.colour_cables(_selected_cables() or cable.cables_of(FreeCAD.ActiveDocument))
+            FreeCAD.ActiveDocument.recompute()
+        _guarded("Deviation colours", run)
+
+
+class DiagnoseRecording:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_diagnose"), "MenuText": "Diagnose recording",
+                "ToolTip": "Load a recording case.json: show scan points, nominal and fitted "
+                           "cables and the diagnosis (as `cablefit diagnose`)"}
+
+    def IsActive(self):
+        return True
+
+    def Activated(self):
+        from PySide import QtGui
+        path, _ = QtGui.QFileDialog.getOpenFileName(None, "Recording case", "", "case.json (*.json)")
+        if not path:
+            return
+        if not _has_doc():
+            FreeCAD.newDocument()
+        report = os.path.join(os.path.dirname(path), "cablefit-diagnosis")
+
+        def run():
+            bar = gui_progress.ProgressBar("cablefit: diagnose")
+            try:
+                diagnose.diagnose_recording(path, FreeCAD.ActiveDocument, report, bar)
+            finally:
+                bar.close()
+            FreeCADGui.SendMsgToActiveView("ViewFit")
+        _guarded("Diagnose recording", run)
+
+
+class ExportReport:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_report"), "MenuText": "Export report",
+                "ToolTip": "Write the relax report of the selected (or all) cables to a folder: "
+                           "report.html, STEP, JSON and picture, as `cablefit relax --out`"}
+
+    def IsActive(self):
+        return _has_doc() and bool(cable.cables_of(FreeCAD.ActiveDocument))
+
+    def Activated(self):
+        from PySide import QtCore, QtGui
+        folder = QtGui.QFileDialog.getExistingDirectory(None, "Report folder")
+        if not folder:
+            return
+
+        def run():
+            cables = _selected_cables() or cable.cables_of(FreeCAD.ActiveDocument)
+            bar = gui_progress.ProgressBar("cablefit: report")
+            try:
+                report = engine.export_report(cables, folder, True, bar)
+            finally:
+                bar.close()
+            FreeCAD.Console.PrintMessage("cablefit: report written to %s\n" % report)
+            QtGui.QDesktopServices.openUrl(QtCore.QUrl.fromLocalFile(report))
+        _guarded("Export report", run)
+
+
+COMMANDS = [("Cablefit_MakePhysical", MakePhysical()), ("Cablefit_AddSupport", AddSupport()),
+            ("Cablefit_RelaxHarness", RelaxHarness()),
+            ("Cablefit_DeviationColours", DeviationColours()),
+            ("Cablefit_DiagnoseRecording", DiagnoseRecording()),
+            ("Cablefit_ExportReport", ExportReport())]
+
+
+def register():
+    for name, command in COMMANDS:
+        FreeCADGui.addCommand(name, command)
+    return [name for name, _ in COMMANDS]
