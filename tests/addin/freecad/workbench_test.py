@@ -1,0 +1,327 @@
+# Headless tests of the FreeCAD workbench, run by `freecadcmd` (see CMakeLists.txt): a document
+# with a spline cable and a clip solid goes through the same functions the GUI commands call, and
+# the results are checked against the `cablefit` CLI run on the same input files.
+# Environment: CABLEFIT_FC_CASE (which test), CABLEFIT_CLI, CABLEFIT_MODULE_DIR,
+# CABLEFIT_WORKBENCH_DIR, CABLEFIT_SHARED_DIR, CABLEFIT_TEST_OUT.
+# freecadcmd prints a script's exception but exits 0: every failure ends in sys.exit(1).
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+import traceback
+
+ENV = os.environ
+sys.path[:0] = [ENV["CABLEFIT_WORKBENCH_DIR"], ENV["CABLEFIT_MODULE_DIR"]]
+
+import FreeCAD  # noqa: E402
+import Part  # noqa: E402
+
+from cablefit_workbench import cable, colours, diagnose, engine  # noqa: E402
+
+SAG_TOLERANCE = 1e-9  # [m] workbench vs CLI: the same code on the same input
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, what):
+    if not condition:
+        raise Failure(what)
+
+
+def out_dir(name):
+    d = os.path.join(ENV["CABLEFIT_TEST_OUT"], name)
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    return d
+
+
+def build_document(name):
+    """A 450 mm spline cable drawn through a 20 x 30 x 30 mm clip box near its middle."""
+    doc = FreeCAD.newDocument(name)
+    pts = [FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(150, 40, 20), FreeCAD.Vector(300, 0, 30),
+           FreeCAD.Vector(450, -30, 0)]
+    spline = Part.BSplineCurve()
+    spline.interpolate(pts)
+    route = doc.addObject("Part::Feature", "Route")
+    route.Shape = spline.toShape()
+    route.Label = "main_route"
+    clip = doc.addObject("Part::Box", "Clip")
+    clip.Length, clip.Width, clip.Height = 20, 30, 30
+    at = spline.value(spline.parameter(FreeCAD.Vector(230, 20, 28)))
+    clip.Placement.Base = at - FreeCAD.Vector(10, 15, 15)
+    doc.recompute()
+    c = cable.make_cable(route, [], doc)
+    c.Label = "main_cable"
+    c.Diameter = 6.0
+    cable.add_support(c, "clip", solid=clip)
+    check(c.Status == "relaxed", "cable relaxed: " + c.Status)
+    check(any("clip 'Clip'" in s for s in c.SupportsUsed),
+          "the clip solid holds the cable: %s" % list(c.SupportsUsed))
+    return doc, c, clip
+
+
+def run_cli(*args):
+    cli = ENV["CABLEFIT_CLI"]
+    t0 = time.time()
+    p = subprocess.run([cli] + list(args), capture_output=True, text=True)
+    check(p.returncode == 0, "cablefit %s exited %d: %s" % (" ".join(args), p.returncode, p.stderr))
+    return time.time() - t0
+
+
+def cli_relax(cables, folder):
+    """Relax input files written by the workbench, relaxed by the CLI. Returns its JSON."""
+    os.makedirs(folder, exist_ok=True)
+    engine.write_relax_input(cables, folder)
+    seconds = run_cli("relax", os.path.join(folder, "harness.step"), "--config",
+                      os.path.join(folder, "harness.json"), "--out", os.path.join(folder, "cli"),
+                      "--no-pictures")
+    print("cablefit relax (CLI process): %.3f s" % seconds)
+    with open(os.path.join(folder, "cli", "harness.json")) as f:
+        return json.load(f)
+
+
+def compare_with_cli(c, cli_cable):
+    sag = c.Sag.Value / 1e3
+    cli_sag = cli_cable["deviation"]["max"]
+    check(abs(sag - cli_sag) <= SAG_TOLERANCE, "sag %.12g m vs CLI %.12g m" % (sag, cli_sag))
+    rows = cli_cable["relaxed_centreline"]["rows"]
+    check(len(rows) == len(c.RelaxedPoints), "sample count %d vs CLI %d" %
+          (len(c.RelaxedPoints), len(rows)))
+    worst = max(max(abs(p.x / 1e3 - r[1]), abs(p.y / 1e3 - r[2]), abs(p.z / 1e3 - r[3]))
+                for p, r in zip(c.RelaxedPoints, rows))
+    check(worst <= SAG_TOLERANCE, "relaxed centreline differs from the CLI's by %.3g m" % worst)
+    lowest = min(p.z for p in c.RelaxedPoints) / 1e3
+    cli_lowest = min(r[3] for r in rows)
+    check(abs(lowest - cli_lowest) <= SAG_TOLERANCE, "lowest point %.12g vs %.12g m" %
+          (lowest, cli_lowest))
+    print("%s: sag %.9f mm (CLI %.9f mm, |diff| %.3g m), centreline |diff| <= %.3g m" %
+          (c.Label, c.Sag.Value, cli_sag * 1e3, abs(sag - cli_sag), worst))
+
+
+def test_relax_vs_cli():
+    doc, c, clip = build_document("relax_vs_cli")
+    check(c.Sag.Value > 0.1, "the cable sags under gravity: %s" % c.Sag)
+    check(abs(c.Length.Value - c.Route[0].Shape.Length) < 0.05,
+          "length %s vs drawn %.4f mm" % (c.Length, c.Route[0].Shape.Length))
+    folder = out_dir("relax_vs_cli")
+    cli = cli_relax([c], folder)
+    compare_with_cli(c, cli["cables"][0])
+    t0 = time.time()
+    c.touch()
+    doc.recompute()
+    print("recompute in FreeCAD (write STEP, relax in-process, read tube): %.3f s, solve %.3f s" %
+          (time.time() - t0, c.SolveSeconds))
+
+    # Add support at a picked point: a pin halfway along the route holds the cable up there.
+    sag_before = c.Sag.Value
+    mid = c.Route[0].Shape.valueAt(c.Route[0].Shape.FirstParameter + 0.25 * (
+        c.Route[0].Shape.LastParameter - c.Route[0].Shape.FirstParameter))
+    cable.add_support(c, "pin", point=mid)
+    check(any(s.startswith("pin (harness.json)") for s in c.SupportsUsed),
+          "pin support used: %s" % list(c.SupportsUsed))
+    check(c.Sag.Value < sag_before, "an extra pin reduces the sag: %.4f -> %.4f mm" %
+          (sag_before, c.Sag.Value))
+    compare_with_cli(c, cli_relax([c], out_dir("relax_vs_cli_pin"))["cables"][0])
+
+    # Relax harness: a second cable, both relaxed together in one input.
+    spline = Part.BSplineCurve()
+    spline.interpolate([FreeCAD.Vector(0, 100, 0), FreeCAD.Vector(200, 150, -20),
+                        FreeCAD.Vector(400, 100, 0)])
+    route2 = doc.addObject("Part::Feature", "Route2")
+    route2.Shape = spline.toShape()
+    c2 = cable.make_cable(route2, [], doc)
+    c2.Label = "second_cable"
+    c2.Material = "Stiffness"
+    c2.BendingStiffness, c2.TorsionalStiffness, c2.LinearDensity = 0.02, 0.015, 0.08
+    alone = {}
+    for x in (c, c2):
+        x.recompute()
+        alone[x.Name] = list(x.RelaxedPoints)
+    relaxation = cable.relax_harness(doc)
+    check(len(relaxation.cables) == 2 and all(r.ok for r in relaxation.cables),
+          "both cables relaxed together")
+    for x in (c, c2):
+        worst = max((p - q).Length for p, q in zip(alone[x.Name], x.RelaxedPoints))
+        check(worst < 1e-6, "%s: harness relax = single relax (%.3g mm)" % (x.Label, worst))
+    cli = cli_relax([c, c2], out_dir("relax_harness"))
+    for x in (c, c2):
+        compare_with_cli(x, next(j for j in cli["cables"] if j["name"] == x.Label))
+    check(abs(c2.MaterialUsed.find("EI=0.02")) >= 0, "material property used: " + c2.MaterialUsed)
+
+
+def test_save_reload_step():
+    doc, c, clip = build_document("save_reload")
+    folder = out_dir("save_reload")
+    sag, points, volume = c.Sag.Value, list(c.RelaxedPoints), c.Shape.Volume
+    name, clip_name = c.Name, clip.Name
+    path = os.path.join(folder, "harness.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    c, clip = doc.getObject(name), doc.getObject(clip_name)
+    check(cable.is_cable(c), "the Cable proxy is restored")
+    check(c.Sag.Value == sag and list(c.RelaxedPoints) == points, "outputs survive reload")
+    check([s.Name for s in c.Supports] == ["Clip"] and c.Diameter.Value == 6.0,
+          "inputs survive reload")
+    check(abs(c.Shape.Volume - volume) < 1e-9 * volume, "shape survives reload")
+    c.touch()
+    doc.recompute()
+    check(c.Status == "relaxed", "recomputed after reload: " + c.Status)
+    check(abs(c.Sag.Value - sag) < 1e-9, "same sag after reload + recompute: %.12g vs %.12g mm" %
+          (c.Sag.Value, sag))
+
+    # STEP export through FreeCAD and read back: the tube of `cablefit relax`.
+    step = os.path.join(folder, "cable.step")
+    engine.export_step([c, clip], step)
+    back = Part.read(step)
+    check(len(back.Solids) == 2, "STEP holds the tube and the clip: %d solids" % len(back.Solids))
+    tube = max(back.Solids, key=lambda s: s.Length)
+    check(abs(tube.Volume - volume) < 1e-6 * volume, "tube volume %.6f vs %.6f mm^3" %
+          (tube.Volume, volume))
+    cli = cli_relax([c], os.path.join(folder, "cli_input"))
+    cli_shape = Part.read(os.path.join(folder, "cli_input", "cli", "harness.step"))
+    cli_tube = max(cli_shape.Solids, key=lambda s: s.Length)
+    check(abs(cli_tube.Volume - tube.Volume) < 1e-6 * volume, "tube volume vs CLI STEP's")
+    check(tube.BoundBox.isInside(cli_tube.BoundBox.Center) and
+          max(abs(a - b) for a, b in zip(
+              (tube.BoundBox.XMin, tube.BoundBox.YMin, tube.BoundBox.ZMin, tube.BoundBox.XMax,
+               tube.BoundBox.YMax, tube.BoundBox.ZMax),
+              (cli_tube.BoundBox.XMin, cli_tube.BoundBox.YMin, cli_tube.BoundBox.ZMin,
+               cli_tube.BoundBox.XMax, cli_tube.BoundBox.YMax, cli_tube.BoundBox.ZMax))) < 1e-4,
+          "same tube bounding box as the CLI's STEP")
+    # The exported tube read by cablefit itself: its recovered centreline is the relaxed one.
+    r = engine.native().relax(step, "", 1e-6, "mm", None)
+    recovered = [x for x in r.cables if abs(x.diameter - 0.006) < 1e-4]
+    check(len(recovered) == 1, "cablefit reads the exported tube back as a 6 mm cable: %s" %
+          [(x.name, x.diameter) for x in r.cables])
+    drawn = recovered[0].drawn.T * 1e3
+    relaxed_line = Part.makePolygon(points)
+    worst = max(relaxed_line.distToShape(Part.Vertex(FreeCAD.Vector(*p)))[0] for p in drawn)
+    check(worst < 0.1, "recovered centreline within %.4f mm of the relaxed one" % worst)
+    print("STEP round trip: recovered centreline within %.4f mm" % worst)
+
+
+def test_colours():
+    doc, c, clip = build_document("colours")
+    maps = colours.colour_cables([c])
+    m = maps[0]
+    name, face_colours = m.Name, list(m.FaceColours)
+    check(len(m.FaceColours) == len(m.Shape.Faces) > 0, "one colour per face")
+    check(abs(m.ScaleMax - max(c.Deviations)) < 1e-12 and m.ScaleMin == 0, "scale 0 .. max")
+    top = engine.native().deviation_colour(m.ScaleMax, 0, m.ScaleMax)
+    bottom = engine.native().deviation_colour(0, 0, m.ScaleMax)
+    check(sum(top) > sum(bottom) + 0.5, "viridis: the top of the scale is the bright end")
+    values = list(m.SegmentDeviations)
+    check(max(values) <= m.ScaleMax + 1e-12 and min(values) >= 0, "segment values on the scale")
+    check(values[0] < 0.2 * max(values), "the clamped start barely deviates")
+    check(abs(m.Shape.BoundBox.XLength - c.Shape.BoundBox.XLength) < 0.2 * c.DiameterUsed.Value,
+          "the deviation map covers the cable")
+    path = os.path.join(out_dir("colours"), "colours.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    check(list(doc.getObject(name).FaceColours) == face_colours,
+          "colours survive reload")
+
+
+def test_diagnose():
+    doc = FreeCAD.newDocument("diagnose")
+    case_dir = os.path.join(ENV["CABLEFIT_SHARED_DIR"], "cases", "public",
+                            "sample-intrinsic_curvature")
+    folder = out_dir("diagnose")
+    t0 = time.time()
+    g = diagnose.diagnose_recording(os.path.join(case_dir, "case.json"), doc, folder)
+    print("diagnose in FreeCAD: %.1f s" % (time.time() - t0))
+    with open(os.path.join(case_dir, "truth.json")) as f:
+        truth = json.load(f)
+    check(g.Effect == truth["effect"], "effect %s vs truth %s" % (g.Effect, truth["effect"]))
+    with open(os.path.join(folder, "diagnosis.json")) as f:
+        written = json.load(f)
+    check(written["effect"] == g.Effect and abs(written["confidence"] - g.Confidence) < 1e-12,
+          "diagnosis.json written by the CLI's writer agrees")
+    check(os.path.exists(g.Report), "report.html written")
+    names = sorted(o.Name for o in g.Group)
+    check(names == ["Fitted", "Nominal", "Observation", "ScanPoints"], "shown objects %s" % names)
+    check(len(doc.getObject("ScanPoints").Shape.Vertexes) > 100, "scan points shown")
+    check(doc.getObject("Fitted").Shape.Length > 100, "fitted cable shown (mm)")
+
+
+def test_report():
+    doc, c, clip = build_document("report")
+    folder = out_dir("report")
+    report = engine.export_report([c], folder, pictures=True)
+    check(os.path.exists(report) and os.path.getsize(report) > 1000, "report.html written")
+    for f in ("harness.step", "harness.json", "harness-deviation.png"):
+        check(os.path.exists(os.path.join(folder, f)), f + " written")
+    with open(os.path.join(folder, "harness.json")) as f:
+        mine = json.load(f)
+    check(mine["format"] == "cablefit-relax/1", "relax JSON written")
+    compare_with_cli(c, mine["cables"][0])
+    html = open(report).read()
+    check("main_cable" in html and "harness-deviation.png" in html, "report names cable + picture")
+
+
+def test_errors():
+    doc, c, clip = build_document("errors")
+    sag = c.Sag.Value
+    c.Material = "Section file"
+    c.SectionFile = "/nonexistent/section.json"
+    doc.recompute()  # must not raise: the problem goes to the report view
+    check(c.Status.startswith("failed: ") and "section.json" in c.Status,
+          "a bad section file is reported on the cable: " + c.Status)
+    check(c.Sag.Value == sag and c.Shape.Volume > 0, "the last good shape is kept")
+    c.Material = "Default bundle"
+    doc.recompute()
+    check(c.Status == "relaxed", "recovers once fixed: " + c.Status)
+    try:
+        engine.native().relax("/nonexistent/h.step")
+        check(False, "a missing file raises")
+    except engine.native().Error as e:
+        check("/nonexistent/h.step" in str(e) and "\n" not in str(e), "one line naming the file")
+    step = os.path.join(out_dir("errors"), "h.step")
+    engine.export_step([c.Route[0], clip], step)
+    stages = []
+    r = engine.native().relax(step, "", 1e-6, "mm", lambda f, s: stages.append(s) or False)
+    check(not r.cables[0].ok and r.cables[0].error == "cancelled", "progress False cancels")
+
+    def boom(f, s):
+        raise KeyError("user pressed Esc")
+    try:
+        engine.native().relax(step, "", 1e-6, "mm", boom)
+        check(False, "an exception in progress propagates")
+    except KeyError:
+        pass
+    seen = []
+    r = engine.native().relax(step, "", 1e-6, "mm", lambda f, s: seen.append(f) or True)
+    check(r.cables[0].ok and seen[0] == 0.0 and seen[-1] == 1.0 and seen == sorted(seen),
+          "progress runs 0 -> 1 monotonically")
+
+
+TESTS = {"relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
+         "colours": test_colours, "diagnose": test_diagnose, "report": test_report,
+         "errors": test_errors}
+
+
+def main():
+    name = ENV.get("CABLEFIT_FC_CASE", "")
+    if name not in TESTS:
+        print("CABLEFIT_FC_CASE must be one of %s" % sorted(TESTS))
+        sys.exit(2)
+    try:
+        t0 = time.time()
+        TESTS[name]()
+        print("PASS %s (%.1f s)" % (name, time.time() - t0))
+    except Exception:
+        traceback.print_exc()
+        print("FAIL %s" % name)
+        sys.stdout.flush()
+        os._exit(1)
+    sys.stdout.flush()
+    os._exit(0)
+
+
+main()
