@@ -30,10 +30,17 @@ const std::array<Mat44, 3>& BilinearStrain() {
 }  // namespace
 
 void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc) {
+  for (const RodEdge& e : model.edges) AddEdgeBendingEnergy(e, state, acc);
+}
+
+void AddEdgeBendingEnergy(const RodEdge& e, const RodState& state, EnergyAccumulator* acc) {
   const auto& qk = BilinearStrain();
-  for (const RodEdge& e : model.edges) {
+  {
     const int ia = e.a, ib = e.b;
-    const Eigen::Vector4d& qa = state.q[ia];
+    // With a rest rotation, a's frame enters as q_a * rest: its chart is rotated by R_rest^T,
+    // so a's gradient and Hessian rows are mapped back with R_rest.
+    const Eigen::Vector4d qa = e.has_rest ? quat::Multiply(state.q[ia], e.rest) : state.q[ia];
+    const Eigen::Matrix3d back = e.has_rest ? quat::ToMatrix(e.rest) : Eigen::Matrix3d::Identity();
     const Eigen::Vector4d& qb = state.q[ib];
     const Mat34 l = quat::LeftStrain(qa);   // P = l qb
     const Mat34 m = quat::RightStrain(qb);  // P = m qa
@@ -46,18 +53,20 @@ void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumu
     const Eigen::Vector4d gb = 2.0 * l.transpose() * mom;
     const Eigen::Matrix<double, 4, 3> ja = quat::ChartJacobian(qa);
     const Eigen::Matrix<double, 4, 3> jb = quat::ChartJacobian(qb);
-    acc->gradient.segment<3>(3 * ia) += ja.transpose() * ga;
+    acc->gradient.segment<3>(3 * ia) += back * (ja.transpose() * ga);
     acc->gradient.segment<3>(3 * ib) += jb.transpose() * gb;
-    if (!acc->hessian) continue;
+    if (!acc->hessian) return;
     const double w = 4.0 / e.ds;  // ds * c^2
     const Eigen::Matrix3d km = e.stiffness;
     const Mat44 haa = w * m.transpose() * km * m;
     const Mat44 hbb = w * l.transpose() * km * l;
     Mat44 hab = w * m.transpose() * km * l;
     for (int k = 0; k < 3; ++k) hab += 2.0 * mom[k] * qk[k];
-    acc->hessian->Diag(ia) += ja.transpose() * haa * ja - 0.25 * ga.dot(qa) * Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d daa =
+        ja.transpose() * haa * ja - 0.25 * ga.dot(qa) * Eigen::Matrix3d::Identity();
+    acc->hessian->Diag(ia) += back * daa * back.transpose();
     acc->hessian->Diag(ib) += jb.transpose() * hbb * jb - 0.25 * gb.dot(qb) * Eigen::Matrix3d::Identity();
-    acc->hessian->AddOffDiagonal(ia, ib, ja.transpose() * hab * jb);
+    acc->hessian->AddOffDiagonal(ia, ib, back * (ja.transpose() * hab * jb));
   }
 }
 

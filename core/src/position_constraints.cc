@@ -8,6 +8,7 @@ namespace cablefit {
 
 Eigen::Matrix<double, Eigen::Dynamic, 3> ConstraintProjector(const RodSupport& support,
                                                              const RodState& state, int k) {
+  if (support.contact) return support.frame.d3.transpose();
   if (!support.sliding) return Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d r = quat::ToMatrix(state.support_q[k]);
   Eigen::Matrix<double, Eigen::Dynamic, 3> p(2, 3);

@@ -31,6 +31,8 @@ struct EnergyAccumulator {
 
 /// Bending and twist: sum over edges of ds/2 (u - u0)^T K (u - u0).
 void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc);
+/// One edge's share of it (e.g. the moment one branch exerts on a junction).
+void AddEdgeBendingEnergy(const RodEdge& edge, const RodState& state, EnergyAccumulator* acc);
 
 /// Gravity and dead point loads (linear in the element tangents).
 void AddLoadEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc);

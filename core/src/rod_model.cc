@@ -26,6 +26,8 @@ void RequirePositive(double v, const char* what) {
   if (v <= 0) throw InvalidInput(std::string(what) + " must be positive (got " + Num(v) + ")");
 }
 
+}  // namespace
+
 Mat3 MaterialStiffness(const MaterialSpec& m) {
   const double root = std::sqrt(m.bending_ratio);
   const double bmax = m.bending_stiffness * root, bmin = m.bending_stiffness / root;
@@ -38,9 +40,45 @@ Mat3 MaterialStiffness(const MaterialSpec& m) {
   return k;
 }
 
-}  // namespace
+RodSupport MakeRodSupport(const SupportSpec& sp, double s, int node) {
+  RodSupport rs;
+  rs.kind = sp.kind;
+  rs.s = s;
+  rs.node = node;
+  rs.position = sp.position;
+  rs.sliding = sp.sliding;
+  if (sp.kind == SupportKind::kClamp)
+    rs.frame = Frame::FromTangentNormal(sp.tangent, sp.normal);
+  else if (sp.kind == SupportKind::kClip)
+    rs.frame = Frame::FromTangentNormal(sp.tangent, sp.tangent.unitOrthogonal());
+  return rs;
+}
 
-void ValidateRodSpec(const RodSpec& spec) {
+RodItem MakeSupportItem(const SupportSpec& sp, int support, double s, double cable_stiffness) {
+  RodItem it;
+  it.is_element = false;
+  it.support = support;
+  it.s = s;
+  if (sp.kind == SupportKind::kClip) {
+    it.masked[0] = it.masked[1] = true;
+  } else if (sp.compliance) {
+    // Rigid directions (zero compliance) would need infinite stiffness: give them a stiffness
+    // far above the cable's own so they act rigid without ruining conditioning.
+    Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (*sp.compliance + sp.compliance->transpose()));
+    Eigen::Vector3d k;
+    for (int d = 0; d < 3; ++d) {
+      const double c = eig.eigenvalues()[d];
+      k[d] = c > 1e-12 / cable_stiffness ? 1.0 / c : 1e8 * cable_stiffness;
+    }
+    it.has_spring = true;
+    it.spring_stiffness = eig.eigenvectors() * k.asDiagonal() * eig.eigenvectors().transpose();
+  } else {
+    it.masked[0] = it.masked[1] = it.masked[2] = true;
+  }
+  return it;
+}
+
+void ValidateRodSpec(const RodSpec& spec, bool require_support) {
   RequirePositive(spec.length, "cable length");
   const MaterialSpec& m = spec.material;
   RequirePositive(m.bending_stiffness, "bending stiffness");
@@ -53,7 +91,7 @@ void ValidateRodSpec(const RodSpec& spec) {
     throw InvalidInput("bending ratio B_max/B_min must be a finite number >= 1");
   if (!std::isfinite(m.principal_angle)) throw InvalidInput("principal angle is not finite");
   if (!Finite(spec.gravity)) throw InvalidInput("gravity is not finite");
-  if (spec.supports.empty()) throw InvalidInput("the cable has no support");
+  if (require_support && spec.supports.empty()) throw InvalidInput("the cable has no support");
   const double tol = 1e-9 * spec.length;
   for (size_t i = 0; i < spec.supports.size(); ++i) {
     const SupportSpec& sp = spec.supports[i];
@@ -167,17 +205,8 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
   const Mat3 k_material = MaterialStiffness(spec.material);
   for (size_t i = 0; i < spec.supports.size(); ++i) {
     const SupportSpec& sp = spec.supports[i];
-    RodSupport rs;
-    rs.kind = sp.kind;
-    rs.s = std::clamp(sp.s, 0.0, L);
-    rs.node = node_at(rs.s);
-    rs.position = sp.position;
-    rs.sliding = sp.sliding;
-    if (sp.kind == SupportKind::kClamp)
-      rs.frame = Frame::FromTangentNormal(sp.tangent, sp.normal);
-    else if (sp.kind == SupportKind::kClip)
-      rs.frame = Frame::FromTangentNormal(sp.tangent, sp.tangent.unitOrthogonal());
-    model.supports.push_back(rs);
+    const double s = std::clamp(sp.s, 0.0, L);
+    model.supports.push_back(MakeRodSupport(sp, s, node_at(s)));
   }
   model.anchor_support = 0;
   for (size_t i = 0; i < model.supports.size(); ++i)
@@ -201,28 +230,8 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
     for (size_t i = 0; i < model.supports.size(); ++i) {
       RodSupport& rs = model.supports[i];
       if (rs.node != node || rs.kind == SupportKind::kPin) continue;
-      RodItem it;
-      it.is_element = false;
-      it.support = static_cast<int>(i);
-      it.s = rs.s;
-      const SupportSpec& sp = spec.supports[i];
-      if (rs.kind == SupportKind::kClip) {
-        it.masked[0] = it.masked[1] = true;
-      } else if (sp.compliance) {
-        // Rigid directions (zero compliance) would need infinite stiffness: give them a
-        // stiffness far above the cable's own so they act rigid without ruining conditioning.
-        Eigen::SelfAdjointEigenSolver<Mat3> eig(0.5 * (*sp.compliance + sp.compliance->transpose()));
-        const double cable = k_material.diagonal().maxCoeff() / L;
-        Eigen::Vector3d k;
-        for (int d = 0; d < 3; ++d) {
-          const double c = eig.eigenvalues()[d];
-          k[d] = c > 1e-12 / cable ? 1.0 / c : 1e8 * cable;
-        }
-        it.has_spring = true;
-        it.spring_stiffness = eig.eigenvectors() * k.asDiagonal() * eig.eigenvectors().transpose();
-      } else {
-        it.masked[0] = it.masked[1] = it.masked[2] = true;
-      }
+      const RodItem it = MakeSupportItem(spec.supports[i], static_cast<int>(i), rs.s,
+                                         k_material.diagonal().maxCoeff() / L);
       rs.item = static_cast<int>(model.items.size());
       model.items.push_back(it);
     }

@@ -44,12 +44,14 @@ void BuildNodeTree(RodModel* model) {
 
 void BuildItemTree(RodModel* model) {
   const int n = static_cast<int>(model->items.size());
-  std::vector<std::vector<int>> adjacent(n);
-  for (const RodEdge& e : model->edges) {
-    adjacent[e.a].push_back(e.b);
-    adjacent[e.b].push_back(e.a);
+  std::vector<std::vector<std::pair<int, int>>> adjacent(n);  // (neighbour, edge)
+  for (size_t k = 0; k < model->edges.size(); ++k) {
+    const RodEdge& e = model->edges[k];
+    adjacent[e.a].emplace_back(e.b, static_cast<int>(k));
+    adjacent[e.b].emplace_back(e.a, static_cast<int>(k));
   }
   model->item_parent.assign(n, -2);
+  model->item_parent_edge.assign(n, -1);
   std::vector<int> bfs;
   bfs.reserve(n);
   for (int root = n - 1; root >= 0; --root) {
@@ -59,10 +61,11 @@ void BuildItemTree(RodModel* model) {
     bfs.push_back(root);
     for (size_t k = first; k < bfs.size(); ++k) {
       const int i = bfs[k];
-      for (int c : adjacent[i]) {
-        if (c == model->item_parent[i]) continue;
+      for (const auto& [c, edge] : adjacent[i]) {
+        if (edge == model->item_parent_edge[i]) continue;
         CABLEFIT_CHECK(model->item_parent[c] == -2, "frame samples form a closed loop");
         model->item_parent[c] = i;
+        model->item_parent_edge[c] = edge;
         bfs.push_back(c);
       }
     }

@@ -120,15 +120,19 @@ KktSolve SolveKkt(const BlockTree& h_masked, const Evaluation& ev,
     const Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (s + s.transpose()));
     const double scale = std::max(1e-300, eig.eigenvalues().cwiseAbs().maxCoeff());
+    // Rank-deficient constraints (a taut straight stretch between two supports cannot change
+    // its end distance to first order) are regularised: the step then leaves those residual
+    // directions to the next iterations instead of failing; a truly over-constrained set-up
+    // still fails on its constraint residual.
+    Eigen::VectorXd ev_s = eig.eigenvalues();
     int pos = 0;
     for (int k = 0; k < m; ++k) {
-      const double e = eig.eigenvalues()[k];
-      if (std::abs(e) <= 1e-13 * scale) return out;  // rank-deficient constraints
-      if (e > 0) ++pos;
+      if (std::abs(ev_s[k]) <= 1e-12 * scale) ev_s[k] = 1e-12 * scale;
+      if (ev_s[k] > 0) ++pos;
     }
     neg += pos - m;
     out.lambda = eig.eigenvectors() *
-                 (eig.eigenvalues().cwiseInverse().asDiagonal() *
+                 (ev_s.cwiseInverse().asDiagonal() *
                   (eig.eigenvectors().transpose() * (ev.c - ev.jac * rhs.col(0))));
     out.step = -(rhs.col(0) + rhs.rightCols(m) * out.lambda);
   } else {

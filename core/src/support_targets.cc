@@ -34,7 +34,7 @@ void SetSupportTargets(const RodModel& model, double t, const RodState& start, R
 void ApplySupportTargets(const RodModel& model, RodState* state) {
   for (size_t i = 0; i < model.items.size(); ++i) {
     const RodItem& it = model.items[i];
-    if (it.is_element) continue;
+    if (it.is_element || it.support < 0) continue;
     const Eigen::Vector4d& qt = state->support_q[it.support];
     if (it.masked[0] && it.masked[1] && it.masked[2]) {
       state->q[i] = qt;
@@ -50,9 +50,15 @@ void ApplySupportTargets(const RodModel& model, RodState* state) {
 
 void AlignQuaternionSigns(const RodModel& model, RodState* state) {
   // Roots first, so every frame is compared with an already aligned neighbour.
+  // Across an edge with a rest rotation, q_b is compared with q_a * rest.
   for (auto it = model.item_order.rbegin(); it != model.item_order.rend(); ++it) {
-    const int p = model.item_parent[*it];
-    if (p >= 0 && state->q[*it].dot(state->q[p]) < 0) state->q[*it] = -state->q[*it];
+    const int i = *it, p = model.item_parent[i];
+    if (p < 0) continue;
+    const RodEdge& e = model.edges[model.item_parent_edge[i]];
+    const double dot = !e.has_rest ? state->q[i].dot(state->q[p])
+                       : e.b == i  ? state->q[i].dot(quat::Multiply(state->q[p], e.rest))
+                                   : quat::Multiply(state->q[i], e.rest).dot(state->q[p]);
+    if (dot < 0) state->q[i] = -state->q[i];
   }
 }
 

@@ -32,6 +32,7 @@ struct RodItem {
   bool is_element = true;
   int element = -1;         // element index if is_element
   int support = -1;         // support index if a support frame
+  int junction = -1;        // junction index if a network junction's frame
   double length = 0.0;      // [m] element length, 0 for a support frame
   double s = 0.0;           // [m] arc length of the sample (element midpoint or support)
   bool masked[3] = {false, false, false};  // body-frame rotation DOFs held fixed
@@ -47,6 +48,10 @@ struct RodEdge {
   double s = 0.0;                // [m] arc length of the edge centre
   Mat3 stiffness = Mat3::Zero();  // [N m^2] material frame (d1, d2, d3)
   Vec3 natural = Vec3::Zero();    // [1/m] natural Darboux vector (cell average), material frame
+  /// Relative rotation (w, x, y, z) of b's frame to a's at rest: the strain is measured from
+  /// q_a * rest to q_b (junction edges, where branches meet at an angle). Identity on a rod.
+  Eigen::Vector4d rest = Eigen::Vector4d(1, 0, 0, 0);
+  bool has_rest = false;
 };
 
 struct RodSupport {
@@ -58,7 +63,10 @@ struct RodSupport {
   Frame frame;                    // target frame (clamp, clip)
   bool sliding = false;           // free translation along the frame tangent
   int constraint_row = -1;        // first row in the position constraints, -1 for the anchor
-  int constraint_rows = 0;        // 3, or 2 when sliding
+  int constraint_rows = 0;        // 3, 2 when sliding, 1 for a contact
+  /// One-sided contact with a solid (network models): one row, the distance along frame.d3 (the
+  /// surface normal) from the contact plane through `position`.
+  bool contact = false;
 };
 
 struct RodModel {
@@ -84,6 +92,7 @@ struct RodModel {
   std::vector<int> node_parent_sign;
   std::vector<int> node_order;
   std::vector<int> item_parent;
+  std::vector<int> item_parent_edge;  // the edge joining an item to its parent, -1 at a root
   std::vector<int> item_order;
   /// Per element: coefficient vector a_j so that the potential of gravity and dead point loads is
   /// sum_j a_j . d3_j (+ const) at load factor 1 [N m].
@@ -114,7 +123,19 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc = {});
 /// Breakpoints (supports, point loads, ends) of a spec, sorted: spans lie between them.
 std::vector<double> SpanBreakpoints(const RodSpec& spec);
 
-/// Validates a RodSpec; throws InvalidInput naming the first problem.
-void ValidateRodSpec(const RodSpec& spec);
+/// Validates a RodSpec; throws InvalidInput naming the first problem. A network branch may have
+/// no support of its own (require_support = false).
+void ValidateRodSpec(const RodSpec& spec, bool require_support = true);
+
+/// Bending/twist stiffness in the material frame (d1, d2, d3) [N m^2].
+Mat3 MaterialStiffness(const MaterialSpec& material);
+
+/// The compiled support of `support` acting at `node` (arc length s [m]), without constraint rows.
+RodSupport MakeRodSupport(const SupportSpec& support, double s, int node);
+
+/// The frame sample of a clamp or clip at arc length s: masked rotations, or a rotational
+/// spring for a compliant clamp (rigid directions get 1e8 x cable_stiffness [N m/rad]).
+RodItem MakeSupportItem(const SupportSpec& support, int support_index, double s,
+                        double cable_stiffness);
 
 }  // namespace cablefit

@@ -1,0 +1,289 @@
+#include "cablefit/core/network_simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "cablefit/core/initial_shape.h"
+#include "network_parts.h"
+#include "obstacle_distance.h"
+#include "quaternion.h"
+#include "rod_energy.h"
+#include "support_targets.h"
+
+namespace cablefit {
+namespace {
+
+struct Hold {
+  int node = -1;
+  int obstacle = -1;
+  Vec3 point = Vec3::Zero();   // nearest surface point [m]
+  Vec3 normal = Vec3::UnitZ();
+  double multiplier = 0.0;     // last solve's lambda [N]
+};
+
+// Per node: cable radius (the thickest branch meeting there) and one (branch, s) it belongs to.
+struct NodeInfo {
+  std::vector<double> radius;
+  std::vector<int> branch;
+  std::vector<double> s;
+  std::vector<char> fixed;  // held in position by a support: no contact there
+};
+
+NodeInfo NodeTable(const NetworkModel& net) {
+  const int nn = net.rod.num_nodes();
+  NodeInfo t{std::vector<double>(nn, 0.0), std::vector<int>(nn, -1), std::vector<double>(nn, 0.0),
+             std::vector<char>(nn, 0)};
+  for (size_t b = 0; b < net.branches.size(); ++b) {
+    const BranchLayout& lay = net.branches[b];
+    const double r = 0.5 * net.spec.branches[b].material.diameter;
+    for (size_t k = 0; k < lay.nodes.size(); ++k) {
+      const int n = lay.nodes[k];
+      t.radius[n] = std::max(t.radius[n], r);
+      if (t.branch[n] < 0) {
+        t.branch[n] = static_cast<int>(b);
+        t.s[n] = lay.node_s[k];
+      }
+    }
+  }
+  for (const RodSupport& sp : net.rod.supports)
+    if (!sp.sliding && !sp.contact) t.fixed[sp.node] = 1;
+  return t;
+}
+
+// The base network with one contact row per hold appended to its supports.
+NetworkModel WithHolds(const NetworkModel& base, const std::vector<Hold>& holds, const NodeInfo& info) {
+  NetworkModel net = base;
+  RodModel& m = net.rod;
+  for (const Hold& h : holds) {
+    RodSupport sp;
+    sp.kind = SupportKind::kPin;
+    sp.contact = true;
+    sp.node = h.node;
+    sp.s = info.s[h.node];
+    sp.position = h.point + info.radius[h.node] * h.normal;
+    sp.frame = Frame::FromTangentNormal(h.normal, h.normal.unitOrthogonal());
+    sp.constraint_row = m.num_constraints;
+    sp.constraint_rows = 1;
+    m.num_constraints += 1;
+    m.supports.push_back(sp);
+    net.support_branch.push_back(info.branch[h.node]);
+  }
+  return net;
+}
+
+// Resizes the state's per-support arrays to `net`: existing supports keep theirs, holds start
+// where their node is (the solver moves them onto the surface by continuation if needed).
+void FitStateToHolds(const NetworkModel& net, const std::vector<Hold>& holds, RodState* st) {
+  const RodModel& m = net.rod;
+  const Eigen::Matrix3Xd r = st->NodePositions(m);
+  st->support_position.resize(net.num_spec_supports);
+  st->support_q.resize(net.num_spec_supports);
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m.num_constraints);
+  const int base_rows = m.num_constraints - static_cast<int>(holds.size());
+  if (st->lambda.size() >= base_rows) lambda.head(base_rows) = st->lambda.head(base_rows);
+  for (size_t k = 0; k < holds.size(); ++k) {
+    st->support_position.push_back(r.col(holds[k].node));
+    st->support_q.emplace_back(1, 0, 0, 0);
+    lambda[base_rows + static_cast<int>(k)] = holds[k].multiplier;
+  }
+  st->lambda = lambda;
+}
+
+// Updates the active set from a solved state; returns true when it changed.
+bool UpdateHolds(const NetworkModel& net, const RodState& st, const ObstacleField& field,
+                 const NodeInfo& info, double tolerance, std::vector<Hold>* holds) {
+  const RodModel& m = net.rod;
+  const Eigen::Matrix3Xd r = st.NodePositions(m);
+  const int base_rows = m.num_constraints - static_cast<int>(holds->size());
+  bool changed = false;
+  std::vector<Hold> kept;
+  std::vector<char> held(m.num_nodes(), 0);
+  for (size_t k = 0; k < holds->size(); ++k) {
+    Hold h = (*holds)[k];
+    h.multiplier = st.lambda[base_rows + static_cast<int>(k)];
+    // The surface pushes along +normal with force -lambda; a pull means the node wants to leave.
+    if (-h.multiplier < -1e-9 * m.force_scale) {
+      changed = true;
+      continue;
+    }
+    const double radius = info.radius[h.node];
+    const ObstacleHit hit = field.Nearest(r.col(h.node), 4 * radius + 1e-3);
+    if (hit.obstacle >= 0 && ((hit.point - h.point).norm() > 1e-4 * radius ||
+                              (hit.normal - h.normal).norm() > 1e-6)) {
+      h.point = hit.point;
+      h.normal = hit.normal;
+      h.obstacle = hit.obstacle;
+      changed = true;
+    }
+    held[h.node] = 1;
+    kept.push_back(h);
+  }
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    if (held[n] || info.fixed[n] || info.radius[n] <= 0) continue;
+    const double radius = info.radius[n];
+    const ObstacleHit hit = field.Nearest(r.col(n), radius);
+    if (hit.obstacle < 0 || radius - hit.distance <= tolerance * 2 * radius) continue;
+    kept.push_back({n, hit.obstacle, hit.point, hit.normal, 0.0});
+    changed = true;
+  }
+  *holds = kept;
+  return changed;
+}
+
+// Deepest overlap of the cable surface with the solids, at nodes and element midpoints [m].
+double MaxPenetration(const NetworkModel& net, const RodState& st, const ObstacleField& field,
+                      const NodeInfo& info) {
+  const RodModel& m = net.rod;
+  const Eigen::Matrix3Xd r = st.NodePositions(m);
+  double worst = 0.0;
+  auto probe = [&](const Vec3& p, double radius) {
+    const ObstacleHit hit = field.Nearest(p, radius);
+    if (hit.obstacle >= 0) worst = std::max(worst, radius - hit.distance);
+  };
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (!info.fixed[n]) probe(r.col(n), info.radius[n]);
+  for (int j = 0; j < m.num_elements; ++j) {
+    const auto& en = m.element_nodes[j];
+    probe(0.5 * (r.col(en[0]) + r.col(en[1])), std::min(info.radius[en[0]], info.radius[en[1]]));
+  }
+  return worst;
+}
+
+void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector<Hold>& holds,
+                  NetworkSolution* sol) {
+  const RodModel& m = net.rod;
+  const int nn = m.num_nodes();
+  const Eigen::Matrix3Xd r = st.NodePositions(m);
+  for (size_t b = 0; b < net.branches.size(); ++b) {
+    const BranchLayout& lay = net.branches[b];
+    Polyline pl;
+    pl.s = lay.node_s;
+    pl.points.resize(3, static_cast<int>(lay.nodes.size()));
+    for (size_t k = 0; k < lay.nodes.size(); ++k) pl.points.col(k) = r.col(lay.nodes[k]);
+    sol->branches.push_back(pl);
+  }
+  // External node forces; the anchor takes what balances the rest.
+  std::vector<Vec3> ext(nn);
+  const Vec3 g = st.load_factor * m.spec.gravity;
+  for (int i = 0; i < nn; ++i) ext[i] = m.node_mass[i] * g;
+  for (const auto& [node, f] : m.node_loads) ext[node] += st.load_factor * f;
+  std::vector<Vec3> reaction(m.supports.size(), Vec3::Zero());
+  Vec3 total = Vec3::Zero();
+  for (size_t k = 0; k < m.supports.size(); ++k) {
+    const RodSupport& sp = m.supports[k];
+    if (sp.constraint_row < 0) continue;
+    const auto p = ConstraintProjector(sp, st, static_cast<int>(k));
+    reaction[k] = -(p.transpose() * st.lambda.segment(sp.constraint_row, sp.constraint_rows));
+    ext[sp.node] += reaction[k];
+  }
+  for (const Vec3& f : ext) total += f;
+  reaction[m.anchor_support] = -total;
+  ext[m.anchor_node] -= total;
+  EnergyAccumulator acc;
+  acc.Reset(m, nullptr);
+  AddBendingEnergy(m, st, &acc);
+  AddSupportSpringEnergy(m, st, &acc);
+  for (int k = 0; k < net.num_spec_supports; ++k) {
+    const RodSupport& sp = m.supports[k];
+    SupportReaction rr;
+    rr.kind = sp.kind;
+    rr.s = sp.s;
+    rr.force = reaction[k];
+    if (sp.item >= 0) rr.moment = quat::ToMatrix(st.q[sp.item]) * acc.gradient.segment<3>(3 * sp.item);
+    sol->reactions.push_back(rr);
+  }
+  for (size_t k = 0; k < holds.size(); ++k) {
+    const int idx = net.num_spec_supports + static_cast<int>(k);
+    ContactLoad c;
+    c.branch = net.support_branch[idx];
+    c.s = m.supports[idx].s;
+    c.obstacle = holds[k].obstacle;
+    c.point = holds[k].point;
+    c.force = reaction[idx];
+    sol->contacts.push_back(c);
+  }
+  // Junctions: forces from subtree sums of the external forces, moments from the edge energies.
+  std::vector<Vec3> beyond(ext);
+  for (auto it = m.node_order.rbegin(); it != m.node_order.rend(); ++it)
+    if (m.node_parent[*it] >= 0) beyond[m.node_parent[*it]] += beyond[*it];
+  for (const JunctionLayout& jl : net.junctions) {
+    JunctionLoads jload;
+    Vec3 fsum = ext[jl.node], msum = Vec3::Zero();
+    for (size_t k = 0; k < jl.branches.size(); ++k) {
+      const BranchLayout& lay = net.branches[jl.branches[k]];
+      const int next = jl.branch_end[k] == 0 ? lay.nodes[1] : lay.nodes[lay.nodes.size() - 2];
+      const Vec3 f = m.node_parent[next] == jl.node ? beyond[next] : Vec3(-beyond[jl.node]);
+      Vec3 mom = Vec3::Zero();
+      if (jl.item >= 0) {
+        EnergyAccumulator edge;
+        edge.Reset(m, nullptr);
+        AddEdgeBendingEnergy(m.edges[jl.edges[k]], st, &edge);
+        mom = -(quat::ToMatrix(st.q[jl.item]) * edge.gradient.segment<3>(3 * jl.item));
+      }
+      jload.force.push_back(f);
+      jload.moment.push_back(mom);
+      fsum += f;
+      msum += mom;
+    }
+    jload.force_residual = fsum;
+    jload.moment_residual = msum;
+    sol->junctions.push_back(jload);
+  }
+}
+
+}  // namespace
+
+RodState DrawnNetworkState(const NetworkModel& net) {
+  const RodModel& m = net.rod;
+  RodState st;
+  st.q = DrawnFrames(net);
+  AlignQuaternionSigns(m, &st);
+  const int ns = static_cast<int>(m.supports.size());
+  st.support_position.assign(ns, Vec3::Zero());
+  st.support_q.assign(ns, Eigen::Vector4d(1, 0, 0, 0));
+  const int b = net.support_branch[m.anchor_support];
+  const BranchSpec& br = net.spec.branches[b];
+  st.support_position[m.anchor_support] =
+      PointAt(ReparameteriseToLength(br.route, br.length), m.supports[m.anchor_support].s);
+  const Eigen::Matrix3Xd r = st.NodePositions(m);
+  for (int k = 0; k < ns; ++k) {
+    st.support_position[k] = r.col(m.supports[k].node);
+    if (m.supports[k].item >= 0) st.support_q[k] = st.q[m.supports[k].item];
+  }
+  st.lambda = Eigen::VectorXd::Zero(m.num_constraints);
+  return st;
+}
+
+NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const NetworkModel base = CompileNetworkModel(spec, options.element_length, options.refinement);
+  const NodeInfo info = NodeTable(base);
+  const ObstacleField field(spec.obstacles);
+  RodState st = DrawnNetworkState(base);
+  std::vector<Hold> holds;
+  NetworkModel net = base;
+  NetworkSolution sol;
+  int iterations = 0;
+  for (int round = 0; round < std::max(1, options.max_contact_rounds); ++round) {
+    net = WithHolds(base, holds, info);
+    FitStateToHolds(net, holds, &st);
+    sol.summary = SolveStatics(net.rod, &st, options.statics);
+    iterations += sol.summary.iterations;
+    sol.contact_rounds = round + 1;
+    if (!sol.summary.converged() || field.empty()) break;
+    if (!UpdateHolds(net, st, field, info, options.contact_tolerance, &holds)) break;
+    if (round + 1 == options.max_contact_rounds) {
+      sol.summary.termination = TerminationType::kNoConvergence;
+      sol.summary.message = "contact set still changing after " + std::to_string(round + 1) + " rounds";
+    }
+  }
+  sol.summary.iterations = iterations;
+  sol.num_elements = net.rod.num_elements;
+  if (!field.empty()) sol.max_penetration = MaxPenetration(net, st, field, info);
+  ExtractLoads(net, st, holds, &sol);
+  sol.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return sol;
+}
+
+}  // namespace cablefit
