@@ -4,10 +4,11 @@
 # and print the performance figures. Results (JSON, CSV, STEP, PNG, report.html) go to demo-out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/install-deps.sh
+tools/install-deps.sh --with-freecad
 BUILD_DIR=${BUILD_DIR:-build}
 cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$BUILD_DIR" -j "$(nproc)" --target cablefit
+tools/install-freecad-workbench.sh "$BUILD_DIR"  # FreeCAD: Cablefit workbench on next start
 CABLEFIT="$BUILD_DIR/addin/cablefit"
 OUT=${OUT:-demo-out}
 mkdir -p "$OUT"

@@ -91,6 +91,7 @@ def make_deviation_map(cable, scale=None, segments=SEGMENTS, doc=None):
 
 def apply_colours(deviation_map):
     vo = deviation_map.ViewObject
+    vo.DisplayMode = "Shaded"  # the segments' seam and joint edges would hide the colours
     colours = [tuple(float(x) for x in s.split()) for s in deviation_map.FaceColours]
     if len(colours) == len(deviation_map.Shape.Faces):
         vo.DiffuseColor = colours
@@ -105,7 +106,7 @@ def colour_cables(cables):
     maps = [make_deviation_map(c, scale) for c in relaxed]
     if FreeCAD.GuiUp:
         from . import legend
-        legend.show(scale, "distance to drawn route [mm]")
+        legend.show(scale, "deviation [mm]")
     for c in relaxed:
         FreeCAD.Console.PrintMessage("cablefit: %s: max deviation %.3f mm, rms %.3f mm\n" %
                                      (c.Label, c.Sag.Value, c.RmsDeviation.Value))

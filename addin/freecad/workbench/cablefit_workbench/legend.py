@@ -48,7 +48,7 @@ def show(scale, title, view=None):
     font = coin.SoFont()
     font.size = 14
     hud.addChild(font)
-    x0, x1, y0, y1 = 0.80, 0.86, -0.6, 0.6  # right side of the view, normalised units
+    x0, x1, y0, y1 = 0.76, 0.81, -0.6, 0.6  # right side; the view spans -1..1 both ways
     for k in range(STEPS):
         v = lo + (hi - lo) * (k + 0.5) / STEPS
         sep = coin.SoSeparator()
@@ -64,7 +64,7 @@ def show(scale, title, view=None):
         sep.addChild(coords)
         sep.addChild(face)
         hud.addChild(sep)
-    hud.addChild(_text(x0 - 0.02, y1 + 0.08, title))
+    hud.addChild(_text(x0 - 0.04, y1 + 0.08, title))
     hud.addChild(_text(x1 + 0.01, y1 - 0.02, "%.3g" % hi))
     hud.addChild(_text(x1 + 0.01, (y0 + y1) / 2, "%.3g" % ((lo + hi) / 2)))
     hud.addChild(_text(x1 + 0.01, y0, "%.3g" % lo))
