@@ -90,21 +90,29 @@ void FitStateToHolds(const NetworkModel& net, const std::vector<Hold>& holds, Ro
   st->lambda = lambda;
 }
 
-// Updates the active set from a solved state; returns true when it changed.
-bool UpdateHolds(const NetworkModel& net, const RodState& st, const ObstacleField& field,
-                 const NodeInfo& info, double tolerance, std::vector<Hold>* holds) {
+enum class HoldUpdate { kUnchanged, kChanged, kRevert };
+
+// Updates the active set from the state `after` a solve that started from `before`. Holds that
+// pull are released and the others follow the nearest surface point. A node that went into a
+// solid gets a hold on the surface it came from (the nearest point to where it was before, so
+// a node that fell right through a thin part is still pushed back out on the side it came
+// from), and the caller restarts from `before` (kRevert).
+HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const RodState& after,
+                       const ObstacleField& field, const NodeInfo& info, double tolerance,
+                       std::vector<Hold>* holds) {
   const RodModel& m = net.rod;
-  const Eigen::Matrix3Xd r = st.NodePositions(m);
+  const Eigen::Matrix3Xd r = after.NodePositions(m);
+  const Eigen::Matrix3Xd r0 = before.NodePositions(m);
   const int base_rows = m.num_constraints - static_cast<int>(holds->size());
-  bool changed = false;
+  HoldUpdate result = HoldUpdate::kUnchanged;
   std::vector<Hold> kept;
   std::vector<char> held(m.num_nodes(), 0);
   for (size_t k = 0; k < holds->size(); ++k) {
     Hold h = (*holds)[k];
-    h.multiplier = st.lambda[base_rows + static_cast<int>(k)];
+    h.multiplier = after.lambda[base_rows + static_cast<int>(k)];
     // The surface pushes along +normal with force -lambda; a pull means the node wants to leave.
     if (-h.multiplier < -1e-9 * m.force_scale) {
-      changed = true;
+      result = HoldUpdate::kChanged;
       continue;
     }
     const double radius = info.radius[h.node];
@@ -114,7 +122,7 @@ bool UpdateHolds(const NetworkModel& net, const RodState& st, const ObstacleFiel
       h.point = hit.point;
       h.normal = hit.normal;
       h.obstacle = hit.obstacle;
-      changed = true;
+      result = HoldUpdate::kChanged;
     }
     held[h.node] = 1;
     kept.push_back(h);
@@ -124,11 +132,30 @@ bool UpdateHolds(const NetworkModel& net, const RodState& st, const ObstacleFiel
     const double radius = info.radius[n];
     const ObstacleHit hit = field.Nearest(r.col(n), radius);
     if (hit.obstacle < 0 || radius - hit.distance <= tolerance * 2 * radius) continue;
-    kept.push_back({n, hit.obstacle, hit.point, hit.normal, 0.0});
-    changed = true;
+    const double travel = (r.col(n) - r0.col(n)).norm();
+    ObstacleHit from = field.Nearest(r0.col(n), radius + travel + 1e-9);
+    if (from.obstacle < 0 || from.distance < 0) from = hit;
+    kept.push_back({n, from.obstacle, from.point, from.normal, 0.0});
+    result = HoldUpdate::kRevert;
   }
   *holds = kept;
-  return changed;
+  return result;
+}
+
+// Nodes the drawing already puts on a surface (within `gap` diameters) start held: a cable
+// drawn lying on a panel stays on it instead of first falling through and being pushed back.
+std::vector<Hold> TouchingInDrawing(const NetworkModel& net, const RodState& st,
+                                   const ObstacleField& field, const NodeInfo& info, double gap) {
+  std::vector<Hold> holds;
+  if (field.empty()) return holds;
+  const Eigen::Matrix3Xd r = st.NodePositions(net.rod);
+  for (int n = 0; n < net.rod.num_nodes(); ++n) {
+    if (info.fixed[n] || info.radius[n] <= 0) continue;
+    const double reach = info.radius[n] * (1 + 2 * gap);
+    const ObstacleHit hit = field.Nearest(r.col(n), reach);
+    if (hit.obstacle >= 0 && hit.distance <= reach) holds.push_back({n, hit.obstacle, hit.point, hit.normal, 0.0});
+  }
+  return holds;
 }
 
 // Deepest overlap of the cable surface with the solids, at nodes and element midpoints [m].
@@ -261,18 +288,27 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   const NodeInfo info = NodeTable(base);
   const ObstacleField field(spec.obstacles);
   RodState st = DrawnNetworkState(base);
-  std::vector<Hold> holds;
+  std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;
   int iterations = 0;
   for (int round = 0; round < std::max(1, options.max_contact_rounds); ++round) {
     net = WithHolds(base, holds, info);
     FitStateToHolds(net, holds, &st);
+    const RodState before = st;
     sol.summary = SolveStatics(net.rod, &st, options.statics);
     iterations += sol.summary.iterations;
     sol.contact_rounds = round + 1;
     if (!sol.summary.converged() || field.empty()) break;
-    if (!UpdateHolds(net, st, field, info, options.contact_tolerance, &holds)) break;
+    const HoldUpdate update =
+        UpdateHolds(net, before, st, field, info, options.contact_tolerance, &holds);
+    if (update == HoldUpdate::kUnchanged) break;
+    if (update == HoldUpdate::kRevert) {
+      // Keep the solved state's frames for nodes that stayed clear? No: restart from the last
+      // state without penetration, so the new holds start on the right side of the surface.
+      const std::vector<Eigen::Vector4d> q = before.q;
+      st.q = q;
+    }
     if (round + 1 == options.max_contact_rounds) {
       sol.summary.termination = TerminationType::kNoConvergence;
       sol.summary.message = "contact set still changing after " + std::to_string(round + 1) + " rounds";

@@ -21,6 +21,8 @@ struct NetworkOptions {
   /// Contacts are added where the surface comes closer than radius (1 - this fraction of the
   /// diameter); the reported penetration stays below about this fraction.
   double contact_tolerance = 0.002;
+  /// Nodes drawn within this fraction of the diameter of a surface start in contact.
+  double contact_gap = 0.1;
   int max_contact_rounds = 40;
 };
 
