@@ -295,15 +295,39 @@ def test_errors():
         check(False, "an exception in progress propagates")
     except KeyError:
         pass
+    from cablefit_workbench import gui_progress
+    bar = gui_progress.ProgressBar("test")  # FreeCAD's progress indicator, as the GUI uses it
+    r = engine.native().relax(step, "", 1e-6, "mm", bar)
+    check(r.cables[0].ok and not bar._open, "FreeCAD's progress indicator drives a relax")
     seen = []
     r = engine.native().relax(step, "", 1e-6, "mm", lambda f, s: seen.append(f) or True)
     check(r.cables[0].ok and seen[0] == 0.0 and seen[-1] == 1.0 and seen == sorted(seen),
           "progress runs 0 -> 1 monotonically")
 
 
+def test_tube_source():
+    """Make physical on a tube solid (a circle swept along a spline): cablefit recovers its
+    centreline and diameter, and the relax equals the CLI's on the same file."""
+    doc = FreeCAD.newDocument("tube")
+    s = Part.BSplineCurve()
+    s.interpolate([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(150, 40, 20),
+                   FreeCAD.Vector(300, 0, 30), FreeCAD.Vector(450, -30, 0)])
+    circle = Part.Wire(Part.makeCircle(4, s.value(s.FirstParameter), s.tangent(s.FirstParameter)[0]))
+    tube = doc.addObject("Part::Feature", "Tube")
+    tube.Shape = Part.Wire(s.toShape()).makePipeShell([circle], True, True)
+    c = cable.make_cable(tube, [], doc)
+    c.Label = "hose"
+    doc.recompute()
+    check(c.Status == "relaxed", "tube cable relaxed: " + c.Status)
+    check(abs(c.DiameterUsed.Value - 8.0) < 0.01, "diameter recovered: %s" % c.DiameterUsed)
+    check(abs(c.Length.Value - s.length()) < 0.5, "centreline length %s vs %.3f mm" %
+          (c.Length, s.length()))
+    compare_with_cli(c, cli_relax([c], out_dir("tube_source"))["cables"][0])
+
+
 TESTS = {"relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
          "colours": test_colours, "diagnose": test_diagnose, "report": test_report,
-         "errors": test_errors}
+         "errors": test_errors, "tube_source": test_tube_source}
 
 
 def main():

@@ -136,16 +136,18 @@ class DiagnoseRecording:
     def Activated(self):
         from PySide import QtGui
         path, _ = QtGui.QFileDialog.getOpenFileName(None, "Recording case", "", "case.json (*.json)")
-        if not path:
-            return
+        if path:
+            self.diagnose(path, os.path.join(os.path.dirname(path), "cablefit-diagnosis"))
+
+    def diagnose(self, path, report_dir):
+        """Everything after the file dialog (the GUI test calls this)."""
         if not _has_doc():
             FreeCAD.newDocument()
-        report = os.path.join(os.path.dirname(path), "cablefit-diagnosis")
 
         def run():
             bar = gui_progress.ProgressBar("cablefit: diagnose")
             try:
-                diagnose.diagnose_recording(path, FreeCAD.ActiveDocument, report, bar)
+                diagnose.diagnose_recording(path, FreeCAD.ActiveDocument, report_dir, bar)
             finally:
                 bar.close()
             FreeCADGui.SendMsgToActiveView("ViewFit")
@@ -164,19 +166,24 @@ class ExportReport:
     def Activated(self):
         from PySide import QtCore, QtGui
         folder = QtGui.QFileDialog.getExistingDirectory(None, "Report folder")
-        if not folder:
-            return
+        report = self.export(folder) if folder else None
+        if report:
+            QtGui.QDesktopServices.openUrl(QtCore.QUrl.fromLocalFile(report))
+
+    def export(self, folder):
+        """Everything after the folder dialog; returns report.html's path, None on failure."""
+        written = []
 
         def run():
             cables = _selected_cables() or cable.cables_of(FreeCAD.ActiveDocument)
             bar = gui_progress.ProgressBar("cablefit: report")
             try:
-                report = engine.export_report(cables, folder, True, bar)
+                written.append(engine.export_report(cables, folder, True, bar))
             finally:
                 bar.close()
-            FreeCAD.Console.PrintMessage("cablefit: report written to %s\n" % report)
-            QtGui.QDesktopServices.openUrl(QtCore.QUrl.fromLocalFile(report))
+            FreeCAD.Console.PrintMessage("cablefit: report written to %s\n" % written[0])
         _guarded("Export report", run)
+        return written[0] if written else None
 
 
 COMMANDS = [("Cablefit_MakePhysical", MakePhysical()), ("Cablefit_AddSupport", AddSupport()),
