@@ -22,7 +22,13 @@ if ! cmake --build "$BUILD_DIR" --target cablefit_native -j "$(nproc)" >/dev/nul
 fi
 module=$(ls "$BUILD_DIR"/addin/freecad/cablefit_native*.so)
 
-MOD_DIR=${FREECAD_MOD_DIR:-"$HOME/.local/share/FreeCAD/Mod"}
+if [ -z "${FREECAD_MOD_DIR:-}" ]; then
+  # Ask FreeCAD itself (it honours FREECAD_USER_HOME); the Debian 0.20 default is the fallback.
+  data=$(freecadcmd -c "import FreeCAD; print('USERDATA=' + FreeCAD.getUserAppDataDir())" 2>/dev/null |
+         sed -n 's/^USERDATA=//p' | tail -1)
+  FREECAD_MOD_DIR="${data:-$HOME/.local/share/FreeCAD/}Mod"
+fi
+MOD_DIR=$FREECAD_MOD_DIR
 target="$MOD_DIR/Cablefit"
 mkdir -p "$target"
 for f in Init.py InitGui.py cablefit_workbench Resources; do
