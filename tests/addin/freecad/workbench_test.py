@@ -145,8 +145,11 @@ def test_relax_vs_cli():
     check(len(relaxation.cables) == 2 and all(r.ok for r in relaxation.cables),
           "both cables relaxed together")
     for x in (c, c2):
+        # Together, a cable near the other's clip may be solved with contact by the network
+        # solver: the same equilibrium to the requested accuracy, not to round-off.
         worst = max((p - q).Length for p, q in zip(alone[x.Name], x.RelaxedPoints))
-        check(worst < 1e-6, "%s: harness relax = single relax (%.3g mm)" % (x.Label, worst))
+        check(worst < x.Accuracy * 1e3, "%s: harness relax = single relax (%.3g mm)" %
+              (x.Label, worst))
     cli = cli_relax([c, c2], out_dir("relax_harness"))
     for x in (c, c2):
         compare_with_cli(x, next(j for j in cli["cables"] if j["name"] == x.Label))
