@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages cablefit builds and tests with (see ../shared/docs/stack.md).
 # Idempotent: installs only what is missing, so a second run costs a few seconds.
-# Usage: tools/install-deps.sh [--with-browser] [--with-freecad]
+# Usage: tools/install-deps.sh [--with-browser] [--with-freecad] [--with-fuzz]
 set -euo pipefail
 
 pkgs=(build-essential cmake ninja-build pkg-config git python3-dev
@@ -13,6 +13,7 @@ for arg in "$@"; do
   case "$arg" in
     --with-browser) pkgs+=(chromium chromium-driver) ;;
     --with-freecad) pkgs+=(freecad xvfb xauth) ;;
+    --with-fuzz) pkgs+=(clang libclang-rt-14-dev) ;;  # libFuzzer + sanitizer runtimes
     *) echo "install-deps: unknown option $arg" >&2; exit 2 ;;
   esac
 done

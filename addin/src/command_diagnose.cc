@@ -1,4 +1,4 @@
-// `cablefit diagnose PATH... --out DIR [--jobs N]` (cli-v1.md): every recording case under the
+// `cablefit diagnose PATH... --out DIR [--jobs N] [--timeout S]` (cli-v1.md): every recording case under the
 // paths is diagnosed into DIR/<case>/ (diagnosis.json, nominal/fitted curves, report.html), with
 // a run summary DIR/report.html. A bad case is reported and skipped; the others still run.
 #include <CLI/CLI.hpp>
@@ -10,6 +10,7 @@
 
 #include "batch_pool.h"
 #include "cablefit/addin/commands.h"
+#include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/case_reader.h"
 #include "diagnose_case.h"
@@ -26,6 +27,7 @@ struct DiagnoseArgs {
   std::vector<std::string> paths;
   std::string out_dir;
   int jobs = 1;
+  double timeout = 0.0;  // [s] per case, 0 = no limit
 };
 
 /// A case name as a folder name: characters outside [A-Za-z0-9._-] become '_' so that a name
@@ -96,6 +98,7 @@ int RunDiagnose(const DiagnoseArgs& a) {
       o.row.name = file;
       const auto t0 = std::chrono::steady_clock::now();
       try {
+        const ScopedDeadline deadline(a.timeout);  // the solvers check it (core/deadline.h)
         DiagnoseCaseOptions options;
         const DiagnosedCase d = DiagnoseCase(file, options, [&](double f, const std::string& s) {
           bar.Update(i, f, std::filesystem::path(file).parent_path().filename().string() + ": " + s);
@@ -165,6 +168,10 @@ void RegisterDiagnoseCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--jobs", args->jobs, "cases diagnosed in parallel (0 = one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  cmd->add_option("--timeout", args->timeout,
+                  "seconds one case may take; a case that takes longer is reported as failed "
+                  "and the others go on (0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->callback([args, exit_code] { *exit_code = RunDiagnose(*args); });
 }
 

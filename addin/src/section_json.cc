@@ -288,7 +288,7 @@ SectionInput ReadSectionFile(const std::string& path) {
     if (t.Has("levels")) in.torsion.levels = RequireInt(t, "levels");
   }
   std::string why;
-  if (!in.torsion.IsValid(&why)) r.Fail("torsion", why);
+  if (!in.torsion.IsValid(&why)) r.FailHere(why);  // why names the torsion field
   try {
     ValidateSection(in.spec);
   } catch (const FileError&) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "block_tree.h"
+#include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "quaternion.h"
 #include "rod_energy.h"
@@ -227,6 +228,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   double nu = 0.0;
   bool first = true;
   for (int iter = 0;; ++iter) {
+    CheckDeadline();  // a batch item's --timeout
     Evaluate(model, *state, true, &state->lambda, free, &ev);
     if (first) {
       sum.initial_energy = ev.energy;

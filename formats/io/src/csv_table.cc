@@ -1,8 +1,9 @@
 #include "csv_table.h"
 
-#include <fstream>
+#include <sstream>
 
 #include "cablefit/core/errors.h"
+#include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"
 
 namespace cablefit::csv {
@@ -31,8 +32,7 @@ std::vector<std::string> Split(const std::string& line) {
 }  // namespace
 
 Table ReadTable(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open for reading");
+  std::istringstream in(ReadInputFile(path, kMaxTextInputBytes, "a CSV file"));
   Table table;
   std::string line;
   int line_no = 0;

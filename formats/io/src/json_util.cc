@@ -7,19 +7,15 @@
 
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/atomic_file.h"
+#include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"
 
 namespace cablefit::json {
 
 Json ReadJsonFile(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw FileError(path, "no such file");
-  if (std::filesystem::is_directory(path, ec))
-    throw FileError(path, "is a directory, expected a JSON file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open for reading");
+  const std::string text = ReadInputFile(path, kMaxTextInputBytes, "a JSON file");
   try {
-    return Json::parse(in);
+    return Json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     // parse_error, and out_of_range for literals such as 1e999 that overflow a double.
     std::string message = e.what();

@@ -3,6 +3,7 @@
 // elements in header order, either whitespace-separated text or packed binary.
 #include "cablefit/formats/ply_reader.h"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cmath>
@@ -16,6 +17,7 @@
 
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/atomic_file.h"
+#include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"
 
 namespace cablefit {
@@ -81,6 +83,9 @@ struct Header {
   std::vector<Element> elements;
   std::size_t body_offset = 0;  // first byte after "end_header\n"
 };
+
+// A header is a few hundred bytes; one that has not ended after this many is not a header.
+constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 20;
 
 std::vector<std::string> Tokens(const std::string& line) {
   std::istringstream in(line);
@@ -254,13 +259,17 @@ std::uint64_t ListCount(double raw, const std::string& path, const char* what) {
 }  // namespace
 
 PointCloud ReadPly(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "no such file");
+  const std::uint64_t file_size = CheckInputFile(path, kMaxPlyInputBytes, "a PLY point cloud");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, "cannot open for reading");
-  // The whole file in memory: its size bounds every allocation below, whatever the header says.
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw FileError(path, "read error");
+  // The header first, so that counts the file cannot hold are refused before the body is read;
+  // then the whole file in memory: its size bounds every allocation below.
+  std::string data(static_cast<std::size_t>(std::min(file_size, kMaxHeaderBytes)), '\0');
+  in.read(data.data(), static_cast<std::streamsize>(data.size()));
+  if (static_cast<std::size_t>(in.gcount()) != data.size()) throw FileError(path, "read error");
+  if (file_size > kMaxHeaderBytes && data.find("end_header") == std::string::npos)
+    throw FileError(path, "no end_header in the first " + std::to_string(kMaxHeaderBytes) +
+                              " bytes (not a PLY header)");
 
   const Header header = ParseHeader(data, path);
   const Element* vertex = nullptr;
@@ -280,7 +289,7 @@ PointCloud ReadPly(const std::string& path) {
                                 "' must be float or double");
   }
 
-  const std::uint64_t body = data.size() - header.body_offset;
+  const std::uint64_t body = file_size - header.body_offset;
   std::uint64_t needed = 0;
   for (const Element& e : header.elements) {
     const std::uint64_t per_item = MinBytesPerItem(e, header.encoding);
@@ -291,6 +300,12 @@ PointCloud ReadPly(const std::string& path) {
                                 " bytes follow the header (truncated file?)");
     needed += e.count * per_item;
   }
+
+  const std::size_t head = data.size();
+  data.resize(static_cast<std::size_t>(file_size));
+  in.read(data.data() + head, static_cast<std::streamsize>(file_size - head));
+  if (static_cast<std::uint64_t>(in.gcount()) != file_size - head)
+    throw FileError(path, "read error (file changed or unreadable while reading)");
 
   PointCloud cloud;
   cloud.points.resize(3, static_cast<Eigen::Index>(vertex->count));

@@ -20,6 +20,12 @@ TriangleMesh ReadTriangleMesh(const std::string& path, double unit) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "no such file");
   if (std::filesystem::file_size(path, ec) == 0) throw FileError(path, "the file is empty");
+  // assimp reads the whole file and builds its scene next to it: the limit bounds that memory
+  // (a binary STL takes 50 bytes a triangle; 1 GiB is 21 million triangles).
+  constexpr std::uintmax_t kMaxMeshBytes = std::uintmax_t{1} << 30;
+  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxMeshBytes)
+    throw FileError(path, "is " + std::to_string(size) + " bytes, more than the limit of " +
+                              std::to_string(kMaxMeshBytes) + " bytes for a mesh file");
   Assimp::Importer importer;
   // STL faces carry their own normals, so vertices would not be welded without dropping them
   // (docs/stack.md, traps). PreTransformVertices applies node transforms (OBJ/glTF scenes).

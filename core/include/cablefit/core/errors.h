@@ -7,11 +7,15 @@
 
 namespace cablefit {
 
+/// `text` with line breaks and other control characters shown as escapes ("\\n"), so that a file
+/// name or a quoted value from a file cannot split an error message over several lines.
+std::string OneLine(const std::string& text);
+
 /// Bad user input: a value, file or set-up that cannot be used. `what()` is one line, without
 /// the file name; the layer that knows the file (formats/, addin/) adds it.
 class InvalidInput : public std::runtime_error {
  public:
-  explicit InvalidInput(const std::string& what) : std::runtime_error(what) {}
+  explicit InvalidInput(const std::string& what) : std::runtime_error(OneLine(what)) {}
 };
 
 /// Bad input located in a file: what() is "<file>: <problem>".

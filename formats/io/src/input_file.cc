@@ -1,0 +1,38 @@
+#include "cablefit/formats/input_file.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "cablefit/core/errors.h"
+
+namespace cablefit {
+
+std::uint64_t CheckInputFile(const std::string& path, std::uint64_t max_bytes, const char* kind) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) throw FileError(path, "no such file");
+  if (fs::is_directory(status)) throw FileError(path, "is a directory, expected a file");
+  // A FIFO or device would block or never end: only plain files are read.
+  if (!fs::is_regular_file(status)) throw FileError(path, "is not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw FileError(path, "cannot read its size (" + ec.message() + ")");
+  if (size > max_bytes)
+    throw FileError(path, "is " + std::to_string(size) + " bytes, more than the limit of " +
+                              std::to_string(max_bytes) + " bytes for " + kind);
+  return size;
+}
+
+std::string ReadInputFile(const std::string& path, std::uint64_t max_bytes, const char* kind) {
+  const std::uint64_t size = CheckInputFile(path, max_bytes, kind);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot open for reading");
+  std::string data(static_cast<std::size_t>(size), '\0');
+  in.read(data.data(), static_cast<std::streamsize>(size));
+  // A file that shrank while being read is reported; one that grew is read up to its old size.
+  if (static_cast<std::uint64_t>(in.gcount()) != size)
+    throw FileError(path, "read error (file changed or unreadable while reading)");
+  return data;
+}
+
+}  // namespace cablefit
