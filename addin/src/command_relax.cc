@@ -12,6 +12,7 @@
 
 #include "batch_pool.h"
 #include "cablefit/addin/commands.h"
+#include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "harness_config.h"
 #include "progress_bar.h"
@@ -34,6 +35,7 @@ struct RelaxArgs {
   double accuracy = 1e-6;
   bool pictures = true;
   bool close_ups = false;
+  double timeout = 0.0;  // [s] per cable (or group solved together), 0 = no limit
 };
 
 double Since(Clock::time_point t0) {
@@ -190,6 +192,7 @@ int RunRelax(const RelaxArgs& a) {
     bar.Update(n + job.file, static_cast<double>(job.cable) / f.drawing.cables.size(),
                f.stem + ": relax " + drawn.name);
     const auto t0 = Clock::now();
+    const ScopedDeadline deadline(a.timeout);  // the solver checks it (core/deadline.h)
     std::string problem;
     try {
       CableSetup setup =
@@ -296,6 +299,10 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--jobs", args->jobs, "parallel workers (0 = one per core)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  cmd->add_option("--timeout", args->timeout,
+                  "seconds one cable may take to relax; a cable that takes longer is reported "
+                  "as failed and the others go on (0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--unit", args->unit, "length unit of mesh files (m, cm, mm, um, in, ft)")
       ->check(CLI::IsMember({"m", "cm", "mm", "um", "in", "inch", "ft"}))
       ->capture_default_str();
