@@ -7,6 +7,7 @@
 #include <exception>
 #include <filesystem>
 
+#include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/colour_map.h"
 #include "diagnose_case.h"
@@ -94,7 +95,7 @@ CableSummary Summarise(const addin::RelaxedFile& f, const addin::HarnessConfig& 
 
 HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::string& config_path,
                                          double accuracy, const std::string& mesh_unit,
-                                         const ProgressCallback& progress) {
+                                         double timeout, const ProgressCallback& progress) {
   auto state = std::make_shared<RelaxedFile>();
   addin::HarnessConfig& config = state->config;
   if (!config_path.empty()) config = addin::ReadHarnessConfig(config_path);
@@ -136,6 +137,7 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
     }
     t0 = Clock::now();
     try {
+      const ScopedDeadline deadline(timeout);  // the solvers check it (core/deadline.h)
       addin::CableSetup setup = addin::SetUpCable(f.drawing, static_cast<int>(i), boxes, config);
       addin::CableRelaxation r =
           addin::RelaxCable(std::move(setup), options, config.min_bend_radius_factor);

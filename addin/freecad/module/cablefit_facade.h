@@ -61,11 +61,13 @@ struct RelaxedFile;  // defined in cablefit_facade.cc
 class HarnessRelaxation {
  public:
   /// Reads `input` (STEP/IGES/mesh, `mesh_unit` for meshes), reads `config_path`
-  /// (harness.json, may be empty) and relaxes every cable like `cablefit relax --accuracy`.
-  /// `progress` (may be empty) gets (fraction, stage); returning false cancels: the remaining
-  /// cables fail with "cancelled". Throws FileError/InvalidInput for unreadable inputs.
+  /// (harness.json, may be empty) and relaxes every cable like `cablefit relax --accuracy
+  /// --timeout`: a cable (or group) taking longer than `timeout` seconds (<= 0: no limit)
+  /// fails with "timed out after N s". `progress` (may be empty) gets (fraction, stage);
+  /// returning false cancels: the remaining cables fail with "cancelled". Throws
+  /// FileError/InvalidInput for unreadable inputs.
   static HarnessRelaxation Run(const std::string& input, const std::string& config_path,
-                               double accuracy, const std::string& mesh_unit,
+                               double accuracy, const std::string& mesh_unit, double timeout,
                                const ProgressCallback& progress);
 
   const std::vector<CableSummary>& cables() const { return cables_; }

@@ -115,16 +115,17 @@ PYBIND11_MODULE(cablefit_native, m) {
   m.def(
       "relax",
       [](const std::string& input, const std::string& config, double accuracy,
-         const std::string& mesh_unit, py::object progress) {
+         const std::string& mesh_unit, py::object progress, double timeout) {
         PythonProgress p(std::move(progress));
-        HarnessRelaxation r = HarnessRelaxation::Run(input, config, accuracy, mesh_unit, p.Callback());
+        HarnessRelaxation r =
+            HarnessRelaxation::Run(input, config, accuracy, mesh_unit, timeout, p.Callback());
         p.RethrowIfFailed();
         return r;
       },
       py::arg("input"), py::arg("config") = "", py::arg("accuracy") = 1e-6,
-      py::arg("mesh_unit") = "mm", py::arg("progress") = py::none(),
-      "Relax every cable of a STEP/IGES/mesh file like `cablefit relax INPUT --config CONFIG`. "
-      "progress(fraction, stage) returning False (or raising) cancels.");
+      py::arg("mesh_unit") = "mm", py::arg("progress") = py::none(), py::arg("timeout") = 0.0,
+      "Relax every cable of a STEP/IGES/mesh file like `cablefit relax INPUT --config CONFIG "
+      "--timeout T`. progress(fraction, stage) returning False (or raising) cancels.");
 
   m.def("deviation_colour", &cablefit::freecad::DeviationColour, py::arg("value"), py::arg("lo"),
         py::arg("hi"), "sRGB (r, g, b) in [0, 1] of value on the relax pictures' colour scale");

@@ -301,6 +301,9 @@ def test_errors():
     stages = []
     r = engine.native().relax(step, "", 1e-6, "mm", lambda f, s: stages.append(s) or False)
     check(not r.cables[0].ok and r.cables[0].error == "cancelled", "progress False cancels")
+    r = engine.native().relax(step, "", 1e-6, "mm", None, 1e-9)
+    check(not r.cables[0].ok and "timed out" in r.cables[0].error,
+          "a solve past its timeout fails: %r" % r.cables[0].error)
 
     def boom(f, s):
         raise KeyError("user pressed Esc")

@@ -40,6 +40,8 @@ _INPUTS = [
      FreeCAD.Vector(0, 0, -9.81)),
     ("App::PropertyFloat", "Accuracy", "Solver", "Requested accuracy of the relaxed shape [m]",
      1e-6),
+    ("App::PropertyFloat", "Timeout", "Solver",
+     "Seconds a solve may take before it is reported as failed (0 = no limit)", 60.0),
     ("App::PropertyFloat", "MinBendRadiusFactor", "Solver",
      "Flag bends tighter than this many diameters", 5.0),
 ]

@@ -159,7 +159,8 @@ def relax(cables, progress=None, keep_folder=None):
     try:
         step, config = write_relax_input(cables, keep_folder or scratch)
         accuracy = min(c.Accuracy for c in cables) if cables else 1e-6
-        relaxation = native().relax(step, config, accuracy, "mm", progress)
+        timeout = max(c.Timeout for c in cables) if cables else 0.0
+        relaxation = native().relax(step, config, accuracy, "mm", progress, timeout)
         index = {}
         for c in cables:
             i = _match(relaxation.cables, c.Label)
