@@ -27,12 +27,17 @@ for t in "${targets[@]}"; do
   work="$PWD/$BUILD_DIR/corpus-run/$t"
   rm -rf "$work" && mkdir -p "$work"
   log="$PWD/$BUILD_DIR/fuzz-$t.log"
+  case "$t" in
+    ply) dict=tests/fuzz/ply.dict ;;
+    *_csv) dict=tests/fuzz/csv.dict ;;
+    *) dict=tests/fuzz/json.dict ;;
+  esac
   regressions=()
   [ -d "tests/fuzz/regressions/$t" ] && regressions=("tests/fuzz/regressions/$t")
   set +e
   "$BUILD_DIR/tests/fuzz/fuzz_$t" "$work" "tests/fuzz/corpus/$t" "${regressions[@]}" \
     -max_total_time="$SECONDS_PER_TARGET" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-    -print_final_stats=1 -artifact_prefix="$artifacts/$t-" > "$log" 2>&1
+    -dict="$dict" -print_final_stats=1 -artifact_prefix="$artifacts/$t-" > "$log" 2>&1
   rc=$?
   set -e
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

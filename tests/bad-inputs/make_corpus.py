@@ -258,7 +258,7 @@ section_entry('section-library-missing', {'format': 'cablefit-section/1',
 rows[-1] = rows[-1][:3] + ('section/section-library-missing/nowhere.json',) + rows[-1][4:]
 section_entry('section-torsion-cells-huge',
               {'format': 'cablefit-section/1', 'materials': cu, 'components': [wire],
-               'torsion': {'finest_cells': 1000000000, 'levels': 2}}, 'finest_cells must be <= 8192')
+               'torsion': {'finest_cells': 1000000000, 'levels': 2}}, 'finest_cells must be <= 1024')
 section_entry('section-truncated', '{"format": "cablefit-section/1", "components": [{"na',
               'not valid JSON')
 

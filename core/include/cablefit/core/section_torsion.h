@@ -28,7 +28,7 @@ struct TorsionOptions {
   int finest_cells = 512;
   /// Number of nested grids (finest_cells / 2^k, k = 0..levels-1); >= 2 for an error estimate.
   int levels = 3;
-  /// False (with a reason) when finest_cells < 8 * 2^(levels-1) or > 8192, or levels < 2 or > 6.
+  /// False (with a reason) when finest_cells < 8 * 2^(levels-1) or > 1024, or levels < 2 or > 6.
   bool IsValid(std::string* why) const;
 };
 
