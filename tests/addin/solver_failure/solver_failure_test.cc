@@ -77,7 +77,7 @@ TEST(SolverFailure, SimulateWritesTheUnconvergedAnswerAndExitsOne) {
 TEST(SolverFailure, DiagnoseBatchGoesOnPastCasesWithoutEquilibrium) {
   const fs::path dir = testing::FreshTempDir("diagnose");
   WriteCase(dir / "cases" / "taut", "taut", true);
-  WriteCase(dir / "cases" / "limp", "limp", false);
+  WriteCase(dir / "cases" / "limp", "limp", false);  // creates dir / "cases"
   fs::copy(testing::SourceDir() / "samples" / "cases" / "sample-force-hysteresis",
            dir / "cases" / "force", fs::copy_options::recursive);
   const fs::path out = dir / "out";
@@ -98,6 +98,7 @@ TEST(SolverFailure, DiagnoseBatchGoesOnPastCasesWithoutEquilibrium) {
 
 TEST(SolverFailure, DiagnoseTimeoutEndsTheSlowCaseAndTheBatchGoesOn) {
   const fs::path dir = testing::FreshTempDir("diagnose-timeout");
+  fs::create_directories(dir / "cases");
   for (const char* c : {"sample-none", "sample-force-hysteresis"})
     fs::copy(testing::SourceDir() / "samples" / "cases" / c, dir / "cases" / c,
              fs::copy_options::recursive);
