@@ -9,6 +9,7 @@ and regenerated, but the committed files are the corpus: the test reads those, n
 """
 import json
 import os
+import random
 import shutil
 import struct
 
@@ -298,6 +299,13 @@ cad_entry('stl-truncated', 'tubes.stl', stl[:20000], 'tubes.stl')
 cad_entry('stl-empty', 'tubes.stl', b'', 'tubes.stl')
 cad_entry('obj-garbage', 'tubes.obj', b'v 0 0 0\nf 1 2 3 4 5\nv nan nan\n', 'tubes.obj')
 cad_entry('unknown-extension', 'tubes.xyz', b'0 0 0\n', 'tubes.xyz')
+# A byte-mutated copy of the sample STEP on which OCCT 7.6 itself dereferences a null handle
+# (SIGSEGV in StepToGeom::MakeCartesianPoint): caught by reading it first in a child process.
+rng = random.Random(1002)
+mutant = bytearray(step)
+for _ in range(4):
+    mutant[rng.randrange(1024, len(mutant))] = rng.randrange(256)
+cad_entry('step-crashes-occt', 'harness.step', bytes(mutant), 'crashed on this file')
 write('cad/step-huge/.keep', '')
 entry('step-huge', 'relax cad/step-huge/harness.step --out {out}', 2, 'cad/step-huge/harness.step',
       'more than the limit', setup='sparse:cad/step-huge/harness.step:300000000')

@@ -27,6 +27,7 @@
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
+#include "crash_probe.h"
 #include "curve_routes.h"
 #include "occt_session.h"
 #include "tube_recovery.h"
@@ -285,6 +286,11 @@ HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& option
     throw FileError(path, "unknown CAD extension '" + ext + "' (expected .step, .stp, .iges, .igs)");
   }
   InitOcctSession();
+  ProbeInChildProcess(path, iges ? "the IGES reader" : "the STEP reader", [&] {
+    HarnessDrawing probe;
+    DrawingBuilder builder(ReadDocument(path, iges, &probe.length_unit), options, &probe);
+    builder.WalkFreeShapes();
+  });
   HarnessDrawing drawing;
   drawing.source_path = path;
   try {
