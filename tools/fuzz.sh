@@ -45,6 +45,6 @@ for t in "${targets[@]}"; do
   size=$(ls "$work" | wc -l)
   if [ $rc -eq 0 ]; then result=ok; else result="FAILED (exit $rc, see $log)"; failed=1; fi
   printf '%-18s %10s %10s %8s %s\n' "$t" "${runs:-?}" "${speed:-?}" "$size" "$result"
-  [ $rc -eq 0 ] || grep -E "ERROR|SUMMARY|threw|==[0-9]+==" "$log" | head -20
+  [ $rc -eq 0 ] || grep -E "ERROR|SUMMARY|threw|==[0-9]+==" "$log" | head -20 || true
 done
 exit $failed
