@@ -98,21 +98,25 @@ bool BlockTreeLdlt::Factorize(const BlockTree& a, double shift) {
   return true;
 }
 
-void BlockTreeLdlt::SolveInPlace(Eigen::Ref<Eigen::MatrixXd> b) const {
+void BlockTreeLdlt::SolveInPlace(Eigen::Ref<Eigen::MatrixXd> b) const { Solve(b); }
+void BlockTreeLdlt::SolveInPlace(Eigen::Ref<RowMajorMatrix> b) const { Solve(b); }
+
+template <class M>
+void BlockTreeLdlt::Solve(M& b) const {
   const BlockTree& a = *a_;
   const std::vector<int>& order = a.Order();
   // Forward, leaves first: y_parent -= U_i^T P_i^{-1} y_i.
   for (int i : order) {
     const int par = a.Parent(i);
     if (par >= 0)
-      b.middleRows<3>(3 * par) -= a.Coupling(i).transpose() * (pivot_inv_[i] * b.middleRows<3>(3 * i));
+      b.template middleRows<3>(3 * par) -= a.Coupling(i).transpose() * (pivot_inv_[i] * b.template middleRows<3>(3 * i));
   }
   // Backward, roots first: x_i = P_i^{-1} (y_i - U_i x_parent).
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     const int i = *it;
     const int par = a.Parent(i);
-    if (par >= 0) b.middleRows<3>(3 * i) -= a.Coupling(i) * b.middleRows<3>(3 * par);
-    b.middleRows<3>(3 * i) = (pivot_inv_[i] * b.middleRows<3>(3 * i)).eval();
+    if (par >= 0) b.template middleRows<3>(3 * i) -= a.Coupling(i) * b.template middleRows<3>(3 * par);
+    b.template middleRows<3>(3 * i) = (pivot_inv_[i] * b.template middleRows<3>(3 * i)).eval();
   }
 }
 

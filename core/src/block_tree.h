@@ -55,10 +55,15 @@ class BlockTreeLdlt {
   int ZeroCount() const { return zero_; }
   /// Smallest eigenvalue among the pivot blocks (a cheap conditioning indicator).
   double MinPivotEigenvalue() const { return min_pivot_; }
-  /// Solves (A + shift I) x = b in place; b is 3n x k.
+  /// Solves (A + shift I) x = b in place; b is 3n x k. Row-major keeps each block's rows
+  /// contiguous when k is large (many right-hand sides, as in the KKT Schur complement).
+  using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   void SolveInPlace(Eigen::Ref<Eigen::MatrixXd> b) const;
+  void SolveInPlace(Eigen::Ref<RowMajorMatrix> b) const;
 
  private:
+  template <class M>
+  void Solve(M& b) const;
   const BlockTree* a_ = nullptr;
   std::vector<Eigen::Matrix3d> pivot_inv_;  // P_i^{-1}
   int negative_ = 0;

@@ -247,6 +247,7 @@ NetworkModel CompileNetworkModel(const NetworkSpec& spec, double element_length,
   }
   BuildNodeTree(&m);
   BuildItemTree(&m);
+  AssignConstraintReferences(&m);
   ComputeLoadCoefficients(node_force, &m);
   m.spec.name = spec.name;
   m.spec.length = net.total_length;

@@ -9,6 +9,7 @@
 #include "obstacle_distance.h"
 #include "quaternion.h"
 #include "rod_energy.h"
+#include "rod_topology.h"
 #include "support_targets.h"
 
 namespace cablefit {
@@ -69,6 +70,7 @@ NetworkModel WithHolds(const NetworkModel& base, const std::vector<Hold>& holds,
     m.supports.push_back(sp);
     net.support_branch.push_back(info.branch[h.node]);
   }
+  AssignConstraintReferences(&m);
   return net;
 }
 
@@ -195,15 +197,11 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   const Vec3 g = st.load_factor * m.spec.gravity;
   for (int i = 0; i < nn; ++i) ext[i] = m.node_mass[i] * g;
   for (const auto& [node, f] : m.node_loads) ext[node] += st.load_factor * f;
-  std::vector<Vec3> reaction(m.supports.size(), Vec3::Zero());
+  std::vector<Vec3> reaction = SupportReactions(m, st);
+  reaction[m.anchor_support].setZero();
   Vec3 total = Vec3::Zero();
-  for (size_t k = 0; k < m.supports.size(); ++k) {
-    const RodSupport& sp = m.supports[k];
-    if (sp.constraint_row < 0) continue;
-    const auto p = ConstraintProjector(sp, st, static_cast<int>(k));
-    reaction[k] = -(p.transpose() * st.lambda.segment(sp.constraint_row, sp.constraint_rows));
-    ext[sp.node] += reaction[k];
-  }
+  for (size_t k = 0; k < m.supports.size(); ++k)
+    if (static_cast<int>(k) != m.anchor_support) ext[m.supports[k].node] += reaction[k];
   for (const Vec3& f : ext) total += f;
   reaction[m.anchor_support] = -total;
   ext[m.anchor_node] -= total;
@@ -236,6 +234,8 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
     if (m.node_parent[*it] >= 0) beyond[m.node_parent[*it]] += beyond[*it];
   for (const JunctionLayout& jl : net.junctions) {
     JunctionLoads jload;
+    jload.branch = jl.branches;
+    jload.branch_end = jl.branch_end;
     Vec3 fsum = ext[jl.node], msum = Vec3::Zero();
     for (size_t k = 0; k < jl.branches.size(); ++k) {
       const BranchLayout& lay = net.branches[jl.branches[k]];

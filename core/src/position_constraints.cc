@@ -29,10 +29,16 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
     const RodSupport& sp = model.supports[k];
     if (sp.constraint_row < 0) continue;
     const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
-    c->segment(sp.constraint_row, sp.constraint_rows) =
-        p * (r.col(sp.node) - state.support_position[k]);
+    Vec3 gap = r.col(sp.node) - state.support_position[k];
+    int from = -1;
+    if (sp.reference >= 0) {
+      const RodSupport& ref = model.supports[sp.reference];
+      gap -= r.col(ref.node) - state.support_position[sp.reference];
+      from = ref.node;
+    }
+    c->segment(sp.constraint_row, sp.constraint_rows) = p * gap;
     if (!jacobian) continue;
-    model.ForEachPathElement(sp.node, [&](int j, int sign) {
+    model.ForEachPathElementFrom(from, sp.node, [&](int j, int sign) {
       const int item = model.element_item[j];
       const Eigen::Matrix3d dr = (-sign * model.element_length[j]) * quat::ToMatrix(state.q[item]) * e3x;
       for (int row = 0; row < sp.constraint_rows; ++row) {
@@ -46,6 +52,19 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
   jacobian->setFromTriplets(triplets.begin(), triplets.end());
 }
 
+std::vector<Vec3> SupportReactions(const RodModel& model, const RodState& state) {
+  std::vector<Vec3> out(model.supports.size(), Vec3::Zero());
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const RodSupport& sp = model.supports[k];
+    if (sp.constraint_row < 0) continue;
+    const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
+    const Vec3 f = p.transpose() * state.lambda.segment(sp.constraint_row, sp.constraint_rows);
+    out[k] -= f;
+    if (sp.reference >= 0) out[sp.reference] += f;
+  }
+  return out;
+}
+
 void AddConstraintCurvature(const RodModel& model, const RodState& state,
                             const Eigen::VectorXd& lambda, BlockTree* hessian) {
   if (model.num_constraints == 0) return;
@@ -55,8 +74,9 @@ void AddConstraintCurvature(const RodModel& model, const RodState& state,
     if (sp.constraint_row < 0) continue;
     const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
     const Vec3 force = p.transpose() * lambda.segment(sp.constraint_row, sp.constraint_rows);
-    model.ForEachPathElement(sp.node,
-                             [&](int j, int sign) { a[j] += sign * model.element_length[j] * force; });
+    const int from = sp.reference >= 0 ? model.supports[sp.reference].node : -1;
+    model.ForEachPathElementFrom(
+        from, sp.node, [&](int j, int sign) { a[j] += sign * model.element_length[j] * force; });
   }
   for (int j = 0; j < model.num_elements; ++j) {
     if (a[j].squaredNorm() == 0.0) continue;

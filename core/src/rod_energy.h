@@ -50,6 +50,10 @@ using SparseJacobian = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 void EvaluatePositionConstraints(const RodModel& model, const RodState& state, Eigen::VectorXd* c,
                                  SparseJacobian* jacobian);
 
+/// Force every support exerts on the cable through its constraint rows (world, [N]); the
+/// anchor's entry is only what other rows pass to it (its own follows from global balance).
+std::vector<Vec3> SupportReactions(const RodModel& model, const RodState& state);
+
 /// Adds the curvature of lambda . c to the Hessian (no value, no gradient).
 void AddConstraintCurvature(const RodModel& model, const RodState& state,
                             const Eigen::VectorXd& lambda, BlockTree* hessian);

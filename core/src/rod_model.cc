@@ -283,6 +283,7 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
   for (int e = 0; e < ne; ++e) model.element_nodes[e] = {e, e + 1};
   BuildNodeTree(&model);
   BuildItemTree(&model);
+  AssignConstraintReferences(&model);
   ComputeLoadCoefficients(node_force, &model);
   model.force_scale = std::max({rho * spec.gravity.norm() * L, load_sum,
                                 spec.material.bending_stiffness / (L * L)});

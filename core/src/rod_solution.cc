@@ -29,15 +29,14 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   for (const auto& [node, f] : model.node_loads) node_force[node] += state.load_factor * f;
   sol.reactions.resize(model.supports.size());
   Vec3 total = Vec3::Zero();
+  const std::vector<Vec3> rows = SupportReactions(model, state);
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];
     sol.reactions[k].kind = sp.kind;
     sol.reactions[k].s = sp.s;
-    if (sp.constraint_row < 0) continue;
-    const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
-    const Vec3 f = -(p.transpose() * state.lambda.segment(sp.constraint_row, sp.constraint_rows));
-    sol.reactions[k].force = f;
-    node_force[sp.node] += f;
+    if (static_cast<int>(k) == model.anchor_support) continue;
+    sol.reactions[k].force = rows[k];
+    node_force[sp.node] += rows[k];
   }
   for (const Vec3& f : node_force) total += f;
   sol.reactions[model.anchor_support].force = -total;

@@ -88,4 +88,25 @@ void ComputeLoadCoefficients(const std::vector<Vec3>& node_force, RodModel* mode
   }
 }
 
+void AssignConstraintReferences(RodModel* model) {
+  std::vector<int> fixed_at(model->num_nodes(), -1);
+  for (size_t k = 0; k < model->supports.size(); ++k) {
+    const RodSupport& sp = model->supports[k];
+    if (!sp.sliding && !sp.contact && fixed_at[sp.node] < 0) fixed_at[sp.node] = static_cast<int>(k);
+  }
+  for (size_t k = 0; k < model->supports.size(); ++k) {
+    RodSupport& sp = model->supports[k];
+    sp.reference = -1;
+    if (sp.constraint_row < 0) continue;
+    for (int n = sp.node; model->node_parent[n] >= 0;) {
+      n = model->node_parent[n];
+      if (n == model->anchor_node) break;
+      if (fixed_at[n] >= 0 && fixed_at[n] != static_cast<int>(k)) {
+        sp.reference = fixed_at[n];
+        break;
+      }
+    }
+  }
+}
+
 }  // namespace cablefit

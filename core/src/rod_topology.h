@@ -21,4 +21,8 @@ void BuildItemTree(RodModel* model);
 /// anchor), so that -sum_i F_i . r_i = sum_j a_j . d3_j + const.
 void ComputeLoadCoefficients(const std::vector<Vec3>& node_force, RodModel* model);  // [N]
 
+/// Sets every support's constraint reference (see RodSupport::reference). Call after
+/// BuildNodeTree, and again when supports are added.
+void AssignConstraintReferences(RodModel* model);
+
 }  // namespace cablefit

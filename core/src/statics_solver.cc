@@ -1,5 +1,6 @@
 #include "cablefit/core/statics_solver.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
@@ -36,7 +37,8 @@ std::vector<char> FreeMask(const RodModel& model) {
 }
 
 void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
-              const Eigen::VectorXd* lambda, const std::vector<char>& free, Evaluation* ev) {
+              const Eigen::VectorXd* lambda, const std::vector<char>& free, Evaluation* ev,
+              bool with_jacobian = true) {
   EnergyAccumulator acc;
   const int n = static_cast<int>(model.items.size());
   acc.Reset(model, with_hessian ? &ev->hessian : nullptr);
@@ -47,14 +49,18 @@ void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
   ev->gradient = acc.gradient;
   for (int k = 0; k < 3 * n; ++k)
     if (!free[k]) ev->gradient[k] = 0.0;
-  EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
-  ev->jac.prune([&free](Eigen::Index, Eigen::Index col, double) { return free[col] != 0; });
+  if (!with_jacobian) {
+    EvaluatePositionConstraints(model, state, &ev->c, nullptr);
+  } else {
+    EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
+    ev->jac.prune([&free](Eigen::Index, Eigen::Index col, double) { return free[col] != 0; });
+  }
   if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
 }
 
 double Merit(const RodModel& model, const RodState& state, double nu, const std::vector<char>& free) {
   Evaluation ev;
-  Evaluate(model, state, false, nullptr, free, &ev);
+  Evaluate(model, state, false, nullptr, free, &ev, /*with_jacobian=*/false);
   return ev.energy + nu * ev.c.lpNorm<1>();
 }
 
@@ -112,29 +118,44 @@ KktSolve SolveKkt(const BlockTree& h_masked, const Evaluation& ev,
   if (!factored) return out;
   const int m = static_cast<int>(ev.c.size());
   const int n3 = static_cast<int>(ev.gradient.size());
-  Eigen::MatrixXd rhs(n3, 1 + m);
+  BlockTreeLdlt::RowMajorMatrix rhs(n3, 1 + m);
   rhs.col(0) = ev.gradient;
   if (m > 0) rhs.rightCols(m) = ev.jac.transpose();
   ldlt.SolveInPlace(rhs);
   int neg = ldlt.NegativeCount();
   if (m > 0) {
-    const Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (s + s.transpose()));
-    const double scale = std::max(1e-300, eig.eigenvalues().cwiseAbs().maxCoeff());
-    // Rank-deficient constraints (a taut straight stretch between two supports cannot change
-    // its end distance to first order) are regularised: the step then leaves those residual
-    // directions to the next iterations instead of failing; a truly over-constrained set-up
-    // still fails on its constraint residual.
-    Eigen::VectorXd ev_s = eig.eigenvalues();
+    Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
+    s = (0.5 * (s + s.transpose())).eval();
+    const Eigen::VectorXd r = ev.c - ev.jac * rhs.col(0);
+    // S = C H^-1 C^T by LDL^T (O(m^3/3)); its pivots' signs give its inertia (Sylvester).
+    Eigen::LDLT<Eigen::MatrixXd> ldlt_s(s);
+    const Eigen::VectorXd d = ldlt_s.vectorD();
+    const double scale = std::max(1e-300, d.cwiseAbs().maxCoeff());
     int pos = 0;
-    for (int k = 0; k < m; ++k) {
-      if (std::abs(ev_s[k]) <= 1e-12 * scale) ev_s[k] = 1e-12 * scale;
-      if (ev_s[k] > 0) ++pos;
+    bool rank_deficient = ldlt_s.info() != Eigen::Success;
+    for (int k = 0; k < m && !rank_deficient; ++k) {
+      if (std::abs(d[k]) <= 1e-12 * scale) rank_deficient = true;
+      if (d[k] > 0) ++pos;
+    }
+    if (!rank_deficient) {
+      out.lambda = ldlt_s.solve(r);
+    } else {
+      // Rank-deficient constraints (a taut straight stretch between two supports cannot change
+      // its end distance to first order) are regularised: the step then leaves those residual
+      // directions to the next iterations instead of failing; a truly over-constrained set-up
+      // still fails on its constraint residual.
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(s);
+      Eigen::VectorXd ev_s = eig.eigenvalues();
+      const double escale = std::max(1e-300, ev_s.cwiseAbs().maxCoeff());
+      pos = 0;
+      for (int k = 0; k < m; ++k) {
+        if (std::abs(ev_s[k]) <= 1e-12 * escale) ev_s[k] = 1e-12 * escale;
+        if (ev_s[k] > 0) ++pos;
+      }
+      out.lambda = eig.eigenvectors() *
+                   (ev_s.cwiseInverse().asDiagonal() * (eig.eigenvectors().transpose() * r));
     }
     neg += pos - m;
-    out.lambda = eig.eigenvectors() *
-                 (ev_s.cwiseInverse().asDiagonal() *
-                  (eig.eigenvectors().transpose() * (ev.c - ev.jac * rhs.col(0))));
     out.step = -(rhs.col(0) + rhs.rightCols(m) * out.lambda);
   } else {
     out.lambda.resize(0);

@@ -28,6 +28,8 @@ struct NetworkOptions {
 
 /// What branch b exerts on a junction's body, at the junction node (world frame).
 struct JunctionLoads {
+  std::vector<int> branch;      // attached branches
+  std::vector<int> branch_end;  // 0: the branch's start is attached, 1: its end
   std::vector<Vec3> force;   // per attached branch [N]
   std::vector<Vec3> moment;  // per attached branch [N m]
   Vec3 force_residual = Vec3::Zero();   // sum of branch forces + the junction's weight [N]

@@ -64,6 +64,11 @@ struct RodSupport {
   bool sliding = false;           // free translation along the frame tangent
   int constraint_row = -1;        // first row in the position constraints, -1 for the anchor
   int constraint_rows = 0;        // 3, 2 when sliding, 1 for a contact
+  /// The constraint holds this support's position relative to the nearest support towards the
+  /// anchor that fixes its node (c = P (r - r_ref - (p - p_ref))), -1 = relative to the anchor.
+  /// Equivalent at the solution, but each Jacobian row then spans only the cable between the
+  /// two supports instead of the whole path from the anchor: O(n) rather than O(n m) entries.
+  int reference = -1;
   /// One-sided contact with a solid (network models): one row, the distance along frame.d3 (the
   /// surface normal) from the contact plane through `position`.
   bool contact = false;
@@ -106,6 +111,12 @@ struct RodModel {
   template <class F>
   void ForEachPathElement(int node, F&& f) const {
     for (int n = node; node_parent[n] >= 0; n = node_parent[n])
+      f(node_parent_element[n], node_parent_sign[n]);
+  }
+  /// The same from `ancestor` (a node on the anchor's path to `node`, or -1 for the anchor).
+  template <class F>
+  void ForEachPathElementFrom(int ancestor, int node, F&& f) const {
+    for (int n = node; node_parent[n] >= 0 && n != ancestor; n = node_parent[n])
       f(node_parent_element[n], node_parent_sign[n]);
   }
 };
