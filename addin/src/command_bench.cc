@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "cablefit/addin/commands.h"
+#include "bench_harness.h"
 #include "cablefit/core/initial_shape.h"
+#include "cablefit/core/network_simulation.h"
 #include "cablefit/core/rod_simulation.h"
 #include "cablefit/formats/case_reader.h"
 
@@ -47,6 +49,31 @@ double MedianMs(int reps, F&& f) {
   }
   std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
   return t[t.size() / 2];
+}
+
+// A whole branched harness relaxed from its drawn shape, at 1x, 4x and 16x the elements.
+void BenchNetwork(int reps) {
+  const NetworkSpec spec = SyntheticHarness();
+  int clips = 0;
+  for (const BranchSpec& b : spec.branches)
+    for (const SupportSpec& sp : b.supports) clips += sp.kind == SupportKind::kClip;
+  const double length = NetworkLength(spec);
+  std::printf("network_branches: %zu branches\n", spec.branches.size());
+  std::printf("network_junctions: %zu junctions\n", spec.junctions.size());
+  std::printf("network_clips: %d clips\n", clips);
+  std::printf("network_length: %.3f m\n", length);
+  for (int factor : {1, 4, 16}) {
+    NetworkOptions opt;
+    opt.element_length = length / (3000.0 * factor);
+    NetworkSolution sol;
+    const double ms = MedianMs(factor == 1 ? std::max(3, reps / 2) : 3, [&] { sol = SolveNetwork(spec, opt); });
+    std::printf("network_x%d: %.3f ms\n", factor, ms);
+    std::printf("network_x%d_elements: %d elements\n", factor, sol.num_elements);
+    std::printf("network_x%d_iterations: %d iterations\n", factor, sol.summary.iterations);
+    std::printf("network_x%d_converged: %d bool\n", factor, sol.converged() ? 1 : 0);
+    std::printf("network_x%d_stable: %d bool\n", factor, sol.summary.stable ? 1 : 0);
+    std::printf("network_x%d_per_element: %.3f us\n", factor, ms / sol.num_elements * 1e3);
+  }
 }
 
 int RunBench(const std::string& case_path, int reps) {
@@ -97,6 +124,7 @@ int RunBench(const std::string& case_path, int reps) {
     std::printf("solve_n%d_iterations: %d iterations\n", n, sum.iterations);
     std::printf("solve_n%d_per_element: %.3f us\n", n, per);
   }
+  BenchNetwork(reps);
   return kExitOk;
 }
 

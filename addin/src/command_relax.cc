@@ -18,6 +18,7 @@
 #include "progress_bar.h"
 #include "relax_cable.h"
 #include "relax_file.h"
+#include "relax_network.h"
 #include "relax_report.h"
 
 namespace cablefit::addin {
@@ -169,47 +170,68 @@ int RunRelax(const RelaxArgs& a) {
   }
 
   // 2. Relax every cable of every input that was read.
+  // A job is one group of cables solved together: a single cable, or a network of cables
+  // joined at breakouts / near solids they may touch (see relax_network.h).
   struct Job {
-    int file, cable;
+    int file;
+    RelaxGroup group;
   };
   std::vector<Job> jobs;
   std::vector<std::vector<OrientedBox>> boxes(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
-    const RelaxedFile& f = files[static_cast<size_t>(i)];
+    RelaxedFile& f = files[static_cast<size_t>(i)];
     for (const DrawnSolid& s : f.drawing.solids) {
       OrientedBox box;  // a solid without tessellation holds nothing (empty box)
       if (s.mesh.vertices.cols() > 0) box = BoundingBoxOf(s.mesh);
       boxes[static_cast<size_t>(i)].push_back(box);
     }
-    for (size_t c = 0; c < f.drawing.cables.size(); ++c) jobs.push_back({i, static_cast<int>(c)});
+    if (!f.read_ok) continue;
+    try {
+      for (RelaxGroup& g : GroupCables(f.drawing, boxes[static_cast<size_t>(i)], config))
+        jobs.push_back({i, std::move(g)});
+    } catch (...) {
+      fail(f, ErrorText(std::current_exception()));
+    }
   }
   const int nj = static_cast<int>(jobs.size());
   std::vector<double> job_seconds(static_cast<size_t>(nj), 0.0);
+  std::mutex network_mutex;
   RunBatch(nj, ResolveJobs(a.jobs, nj), [&](int k) {
     const Job& job = jobs[static_cast<size_t>(k)];
     RelaxedFile& f = files[static_cast<size_t>(job.file)];
-    const DrawnCable& drawn = f.drawing.cables[static_cast<size_t>(job.cable)];
-    bar.Update(n + job.file, static_cast<double>(job.cable) / f.drawing.cables.size(),
-               f.stem + ": relax " + drawn.name);
+    const std::string label = GroupLabel(f.drawing, job.group);
+    bar.Update(n + job.file, static_cast<double>(job.group.cables.front()) / f.drawing.cables.size(),
+               f.stem + ": relax " + label);
     const auto t0 = Clock::now();
     const ScopedDeadline deadline(a.timeout);  // the solver checks it (core/deadline.h)
     std::string problem;
+    std::vector<CableRelaxation> done;
     try {
-      CableSetup setup =
-          SetUpCable(f.drawing, job.cable, boxes[static_cast<size_t>(job.file)], config);
-      CableRelaxation r = RelaxCable(std::move(setup), sim_options, config.min_bend_radius_factor);
-      if (!r.result.converged) {
-        problem = "the solver did not converge: " + r.result.solution.summary.message;
+      if (job.group.network()) {
+        GroupRelaxation g =
+            RelaxNetworkGroup(f.drawing, job.group, boxes[static_cast<size_t>(job.file)], config, sim_options);
+        done = std::move(g.cables);
+        std::lock_guard lock(network_mutex);
+        f.networks.push_back(std::move(g.json));
       } else {
-        bar.PrintLine(stdout, CableLine(f, r));
-        f.cables[static_cast<size_t>(job.cable)] = std::move(r);
+        CableSetup setup = SetUpCable(f.drawing, job.group.cables.front(),
+                                      boxes[static_cast<size_t>(job.file)], config);
+        done.push_back(RelaxCable(std::move(setup), sim_options, config.min_bend_radius_factor));
       }
+      for (const CableRelaxation& r : done)
+        if (!r.result.converged && problem.empty())
+          problem = "the solver did not converge: " + r.result.solution.summary.message;
     } catch (...) {
       problem = ErrorText(std::current_exception());
     }
-    if (!problem.empty()) {
-      f.cable_errors[static_cast<size_t>(job.cable)] = problem;
-      fail(f, "cable '" + drawn.name + "': " + problem);
+    if (problem.empty()) {
+      for (CableRelaxation& r : done) {
+        bar.PrintLine(stdout, CableLine(f, r));
+        f.cables[static_cast<size_t>(r.setup.cable)] = std::move(r);
+      }
+    } else {
+      for (int c : job.group.cables) f.cable_errors[static_cast<size_t>(c)] = problem;
+      fail(f, (job.group.cables.size() > 1 ? "cables '" : "cable '") + label + "': " + problem);
     }
     job_seconds[static_cast<size_t>(k)] = Since(t0);
   });

@@ -118,6 +118,27 @@ CableConfig ReadCable(const FieldReader& r, bool is_default) {
   return c;
 }
 
+JunctionConfig ReadJunction(const FieldReader& r, int index) {
+  RequireKnownKeys(r, {"name", "ends", "compliance", "mass", "note"});
+  JunctionConfig j;
+  j.name = r.Has("name") ? r.RequireString("name") : "junction " + std::to_string(index + 1);
+  const Json& ends = r.RequireArray("ends");
+  if (ends.size() < 2) r.Fail("ends", "a junction joins two or more cable ends");
+  for (size_t i = 0; i < ends.size(); ++i) {
+    const FieldReader e(ends[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "ends"), i));
+    RequireKnownKeys(e, {"cable", "end"});
+    JunctionConfig::End end;
+    end.cable = e.RequireString("cable");
+    const std::string which = e.RequireString("end");
+    if (which != "start" && which != "end") e.Fail("end", "must be \"start\" or \"end\"");
+    end.at_start = which == "start";
+    j.ends.push_back(end);
+  }
+  if (r.Has("compliance")) j.compliance = r.RequireNonNegative("compliance");
+  if (r.Has("mass")) j.mass = r.RequireNonNegative("mass");
+  return j;
+}
+
 template <typename T>
 void Overlay(std::optional<T>* base, const std::optional<T>& top) {
   if (top) *base = top;
@@ -147,7 +168,8 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   const Json root = json::ReadJsonFile(path);
   if (!root.is_object()) throw FileError(path, "must hold a JSON object");
   const FieldReader r(root, path);
-  RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables", "note"});
+  RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
+                       "junctions", "junction_defaults", "note"});
   if (r.Has("format") && r.RequireString("format") != "cablefit-harness/1") {
     r.Fail("format", "must be \"cablefit-harness/1\"");
   }
@@ -156,6 +178,18 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   if (r.Has("gravity")) h.gravity = r.RequireVec3("gravity");
   if (r.Has("min_bend_radius_factor")) {
     h.min_bend_radius_factor = r.RequirePositive("min_bend_radius_factor");
+  }
+  if (r.Has("junctions")) {
+    const Json& list = r.RequireArray("junctions");
+    for (size_t i = 0; i < list.size(); ++i)
+      h.junctions.push_back(ReadJunction(
+          FieldReader(list[i], path, json::IndexKey("junctions", i)), static_cast<int>(i)));
+  }
+  if (r.Has("junction_defaults")) {
+    const FieldReader d = r.Child("junction_defaults");
+    RequireKnownKeys(d, {"compliance", "mass", "note"});
+    if (d.Has("compliance")) h.junction_compliance = d.RequireNonNegative("compliance");
+    if (d.Has("mass")) h.junction_mass = d.RequireNonNegative("mass");
   }
   if (r.Has("default")) h.defaults = ReadCable(r.Child("default"), /*is_default=*/true);
   if (r.Has("cables")) {

@@ -39,12 +39,29 @@ struct CableConfig {
   std::optional<bool> auto_clips;  ///< add a clip where the route passes a solid (default on)
 };
 
+/// A breakout or splice declared in harness.json: the listed cable ends are joined (whether or
+/// not the drawing puts them together; they are expected to meet).
+struct JunctionConfig {
+  std::string name;
+  struct End {
+    std::string cable;
+    bool at_start = true;
+  };
+  std::vector<End> ends;     ///< two or more
+  double compliance = 0.0;   ///< [rad/(N m)] of every branch attachment, 0 = rigid
+  double mass = 0.0;         ///< [kg]
+};
+
 struct HarnessConfig {
   std::string path;                           ///< empty when no --config was given
   Vec3 gravity = Vec3(0, 0, -9.81);           ///< [m/s^2] model frame of the CAD file
   double min_bend_radius_factor = 5.0;        ///< flag bends tighter than this many diameters
   CableConfig defaults;                       ///< "default": applies to every cable
   std::map<std::string, CableConfig> cables;  ///< by cable name
+  std::vector<JunctionConfig> junctions;      ///< declared junctions
+  /// Applied to junctions found in the drawing (ends of 3+ cables meeting).
+  double junction_compliance = 0.0;  ///< [rad/(N m)]
+  double junction_mass = 0.0;        ///< [kg]
 
   /// `defaults` overlaid with the entry for `name` (if any).
   CableConfig For(const std::string& name) const;

@@ -80,7 +80,8 @@ MaterialSpec DefaultBundleMaterial(double d) {
 }
 
 CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
-                      const std::vector<OrientedBox>& boxes, const HarnessConfig& config) {
+                      const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                      const JunctionEnds& junction_ends) {
   const DrawnCable& drawn = drawing.cables[cable];
   const CableConfig cc = config.For(drawn.name);
   CableSetup out;
@@ -123,8 +124,10 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   std::vector<Candidate> candidates;
   const EndConfig start = cc.start.value_or(EndConfig{});
   const EndConfig end = cc.end.value_or(EndConfig{});
-  if (!start.free) candidates.push_back({EndSupport(start, 0.0, route, normals), 3, "start"});
-  if (!end.free) candidates.push_back({EndSupport(end, length, route, normals), 3, "end"});
+  if (!start.free && !junction_ends.start)
+    candidates.push_back({EndSupport(start, 0.0, route, normals), 3, "start"});
+  if (!end.free && !junction_ends.end)
+    candidates.push_back({EndSupport(end, length, route, normals), 3, "end"});
   for (const ExtraSupportConfig& e : cc.supports) {
     SupportSpec sp;
     sp.kind = e.kind;
@@ -161,21 +164,11 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.spec.supports.push_back(c.spec);
     out.support_origin.push_back(c.origin);
   }
-  if (out.spec.supports.empty()) {
+  const bool in_network = junction_ends.start || junction_ends.end;
+  if (out.spec.supports.empty() && !in_network) {
     throw InvalidInput("no supports: both ends are free and harness.json gives none");
   }
-
-  for (const CableJunction& j : drawing.junctions) {
-    if (j.ends.size() < 3) continue;
-    for (const CableJunction::End& e : j.ends) {
-      if (e.cable != cable) continue;
-      out.junction = "clamped (branched bundles not yet solved as one network)";
-      out.notes.push_back(std::string("the ") + (e.at_start ? "start" : "end") + " meets " +
-                          std::to_string(j.ends.size() - 1) +
-                          " other cables at a breakout: each branch is relaxed on its own with "
-                          "that end clamped at its drawn pose");
-    }
-  }
+  if (in_network) out.junction = junction_ends.description;
   return out;
 }
 
@@ -191,11 +184,20 @@ CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
   const RodSpec& spec = r.setup.spec;
   RodSimulator sim(options);
   r.result = sim.Simulate(spec, &r.setup.route);
+  MeasureRelaxation(min_bend_radius_factor, &r);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* out) {
+  CableRelaxation& r = *out;
+  const RodSpec& spec = r.setup.spec;
   r.relaxed = SampleCenterline(r.result.solution.centerline,
                                UniformArcLengths(spec.length, OutputSamples(spec.length)));
 
   const int n = r.relaxed.size();
   r.deviation.resize(n);
+  r.max_deviation = 0.0;
   double sum_sq = 0.0;
   for (int i = 0; i < n; ++i) {
     double d = 0.0;
@@ -227,8 +229,6 @@ CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
   r.min_bend_radius = max_kappa > 0 ? 1.0 / max_kappa : std::numeric_limits<double>::infinity();
   r.bend_limit = min_bend_radius_factor * spec.material.diameter;
   r.bend_flag = r.min_bend_radius < r.bend_limit;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
 }
 
 Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {

@@ -42,10 +42,17 @@ struct CableSetup {
   std::vector<std::string> notes;  ///< assumptions, one sentence each
 };
 
+/// Which ends of a cable are attached to a junction of a network (they get no end support).
+struct JunctionEnds {
+  bool start = false, end = false;
+  std::string description;  ///< what the relax output says about it
+};
+
 /// Builds the set-up. `boxes` are the bounding boxes of `drawing.solids` (same order).
 /// Throws InvalidInput (one line, without the file name) when no valid set-up exists.
 CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
-                      const std::vector<OrientedBox>& boxes, const HarnessConfig& config);
+                      const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                      const JunctionEnds& junction_ends = {});
 
 /// The solved cable and its measures.
 struct CableRelaxation {
@@ -67,6 +74,9 @@ struct CableRelaxation {
 /// Solves the set-up starting from the drawn route and measures the result.
 CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
                            double min_bend_radius_factor);
+
+/// Fills relaxed, deviation and bend radius from `r->result` (its centreline and frames).
+void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* r);
 
 /// Samples along a relaxed cable for output (at least 201, about one per millimetre up to 2001).
 int OutputSamples(double length);  // length [m]

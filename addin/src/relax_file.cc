@@ -129,6 +129,12 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   j["length_unit_of_input"] = f.drawing.length_unit;
   j["config"] = config.path.empty() ? json::Json() : json::Json(config.path);
   j["min_bend_radius_factor"] = config.min_bend_radius_factor;
+  if (!f.networks.empty()) {
+    j["networks"] = f.networks;
+    j["networks_meaning"] =
+        "cables solved together: branch_loads are the force and moment each cable exerts on its "
+        "junction (world frame, N and N m), contacts the force a solid exerts on the cable";
+  }
   json::Json cables = json::Json::array();
   for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
     if (f.cables[i]) {

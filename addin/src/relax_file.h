@@ -42,6 +42,7 @@ struct RelaxedFile {
   StageTimes times;
   std::string picture;                 ///< PNG file name next to the outputs, empty if none
   std::vector<std::string> close_ups;  ///< per cable PNG names (--close-ups), else empty
+  std::vector<json::Json> networks;    ///< per network group: junction loads, contacts
 };
 
 /// The diameter `cable` is drawn with in the output: relaxed set-up's, else harness.json's or

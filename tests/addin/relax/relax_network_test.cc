@@ -1,0 +1,113 @@
+// `cablefit relax` with cables joined by a junction declared in harness.json: two collinear
+// cables spliced end to end sag like the one beam they form; a junction naming an unknown cable
+// is a one-line error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "cablefit/formats/cad_file.h"
+#include "cablefit/formats/json_util.h"
+#include "cli_runner.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+namespace fs = std::filesystem;
+using json::Json;
+using testing::RunCablefit;
+
+std::string Q(const fs::path& p) {
+  std::string q(1, '\'');
+  q.append(p.string()).push_back('\'');
+  return q;
+}
+
+Polyline Line(const Vec3& a, const Vec3& b) {
+  Polyline p;
+  p.points.resize(3, 2);
+  p.points.col(0) = a;
+  p.points.col(1) = b;
+  return p;
+}
+
+// Two straight cables drawn end to end along x: "left" 0.2 m, "right" 0.3 m, diameter 5 mm.
+fs::path WriteSplicedPair(const fs::path& path) {
+  HarnessDrawing drawing;
+  std::vector<RelaxedCable> out;
+  const Vec3 a(0.1, 0.2, 0.05), m(0.3, 0.2, 0.05), b(0.6, 0.2, 0.05);
+  int k = 0;
+  for (const auto& [name, line] : {std::pair{"left", Line(a, m)}, std::pair{"right", Line(m, b)}}) {
+    DrawnCable c;
+    c.name = name;
+    c.diameter = 0.005;
+    c.centreline = line;
+    drawing.cables.push_back(c);
+    out.push_back(RelaxedCable{k++, line, 0.005});
+  }
+  WriteRelaxedStep(path.string(), drawing, out);
+  return path;
+}
+
+const Json& CableNamed(const Json& file, const std::string& name) {
+  for (const Json& c : file.at("cables"))
+    if (c.at("name") == name) return c;
+  throw std::runtime_error("no cable " + name);
+}
+
+// The clamped-clamped beam of relax_cli_test (far end sliding axially), cut in two and spliced
+// rigidly: w_max = q L^4 / (384 EI) at mid-span, which lies on the right cable.
+TEST(RelaxNetwork, DeclaredSpliceSagsLikeTheWholeBeam) {
+  const double length = 0.5, ei = 0.05, q = 0.05 * 9.81;
+  const double expected = q * std::pow(length, 4) / (384 * ei);
+  const fs::path dir = testing::FreshTempDir("relax_splice");
+  WriteSplicedPair(dir / "pair.step");
+  std::ofstream(dir / "harness.json") << R"({"gravity": [0, 0, -9.81],
+    "default": {"material": {"bending_stiffness": 0.05, "torsional_stiffness": 0.04,
+                             "linear_density": 0.05}},
+    "cables": {"right": {"end": {"kind": "clamp", "sliding": true}}},
+    "junctions": [{"name": "splice", "ends": [{"cable": "left", "end": "end"},
+                                             {"cable": "right", "end": "start"}]}]})";
+  const auto run = RunCablefit("relax " + Q(dir / "pair.step") + " --out " + Q(dir / "out") +
+                               " --config " + Q(dir / "harness.json") + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const Json j = json::ReadJsonFile((dir / "out/pair.json").string());
+  const Json& right = CableNamed(j, "right");
+  const Json& left = CableNamed(j, "left");
+  EXPECT_TRUE(right.at("solver").at("converged").get<bool>());
+  EXPECT_EQ(right.at("supports").size(), 1u);  // the spliced end has no support
+  const double sag = std::max(right.at("deviation").at("max").get<double>(),
+                              left.at("deviation").at("max").get<double>());
+  std::printf("spliced beam sag %.6e m, closed form %.6e m (rel. %.2e)\n", sag, expected,
+              sag / expected - 1);
+  EXPECT_NEAR(sag, expected, 0.01 * expected);
+  // Mid-span (0.25 m from the left clamp) is 0.05 m into the right cable.
+  EXPECT_NEAR(right.at("deviation").at("max_at").at("s").get<double>(), 0.05, 0.02 * length);
+  ASSERT_EQ(j.at("networks").size(), 1u);
+  const Json& splice = j.at("networks")[0].at("junctions")[0];
+  EXPECT_EQ(splice.at("name"), "splice");
+  EXPECT_TRUE(splice.at("declared").get<bool>());
+  EXPECT_EQ(splice.at("branch_loads").size(), 2u);
+}
+
+TEST(RelaxNetwork, JunctionNamingAnUnknownCableIsAnError) {
+  const fs::path dir = testing::FreshTempDir("relax_bad_junction");
+  WriteSplicedPair(dir / "pair.step");
+  std::ofstream(dir / "harness.json") << R"({"junctions": [{"name": "j", "ends": [
+      {"cable": "left", "end": "end"}, {"cable": "nowhere", "end": "start"}]}]})";
+  const auto run = RunCablefit("relax " + Q(dir / "pair.step") + " --out " + Q(dir / "out") +
+                               " --config " + Q(dir / "harness.json") + " --no-pictures");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("junction 'j' names cable 'nowhere'"), std::string::npos) << run.err;
+  std::ofstream(dir / "one.json") << R"({"junctions": [{"ends": [{"cable": "left", "end": "end"}]}]})";
+  const auto one = RunCablefit("relax " + Q(dir / "pair.step") + " --out " + Q(dir / "out2") +
+                               " --config " + Q(dir / "one.json") + " --no-pictures");
+  EXPECT_EQ(one.exit_code, 2) << one.err;
+  EXPECT_NE(one.err.find("two or more cable ends"), std::string::npos) << one.err;
+}
+
+}  // namespace
+}  // namespace cablefit
