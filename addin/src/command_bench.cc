@@ -66,7 +66,7 @@ void BenchNetwork(int reps) {
     NetworkOptions opt;
     opt.element_length = length / (3000.0 * factor);
     NetworkSolution sol;
-    const double ms = MedianMs(factor == 1 ? std::max(3, reps / 2) : 3, [&] { sol = SolveNetwork(spec, opt); });
+    const double ms = MedianMs(factor == 1 ? std::max(3, reps / 2) : 1, [&] { sol = SolveNetwork(spec, opt); });
     std::printf("network_x%d: %.3f ms\n", factor, ms);
     std::printf("network_x%d_elements: %d elements\n", factor, sol.num_elements);
     std::printf("network_x%d_iterations: %d iterations\n", factor, sol.summary.iterations);
