@@ -13,9 +13,10 @@ if [ ${#targets[@]} -eq 0 ]; then
   targets=(ply centerline_csv force_curve_csv case_json truth_json json_util harness_config
            section_json)
 fi
+mkdir -p "$BUILD_DIR"
 CC=clang CXX=clang++ cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DCABLEFIT_SANITIZE=ON -DCABLEFIT_FUZZ=ON -DCABLEFIT_FREECAD=OFF > "$BUILD_DIR.configure.log" \
-  || { cat "$BUILD_DIR.configure.log"; exit 1; }
+  -DCABLEFIT_SANITIZE=ON -DCABLEFIT_FUZZ=ON -DCABLEFIT_FREECAD=OFF > "$BUILD_DIR/configure.log" \
+  || { cat "$BUILD_DIR/configure.log"; exit 1; }
 cmake --build "$BUILD_DIR" -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
