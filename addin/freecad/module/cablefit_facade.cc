@@ -1,5 +1,5 @@
-// The facade over addin/src: the same read -> set up -> relax -> write sequence as
-// command_relax.cc (one input, cables in order, no worker pool: FreeCAD calls it from its GUI
+// The facade over addin/src: the same read -> group -> relax -> write sequence as
+// command_relax.cc (one input, groups in order, no worker pool: FreeCAD calls it from its GUI
 // thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
 #include "cablefit_facade.h"
 
@@ -15,6 +15,7 @@
 #include "harness_config.h"
 #include "relax_cable.h"
 #include "relax_file.h"
+#include "relax_network.h"
 #include "relax_report.h"
 #include "report_case.h"
 
@@ -122,34 +123,53 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
     if (s.mesh.vertices.cols() > 0) box = addin::BoundingBoxOf(s.mesh);
     boxes.push_back(box);
   }
-  for (size_t i = 0; i < n; ++i) {
-    const std::string& name = f.drawing.cables[i].name;
-    // Continuation steps report inside the cable's share of the bar and may cancel too.
+  // The CLI's groups: a single cable, or cables solved together as one network (joined at
+  // breakouts, or with contact against nearby solids).
+  const std::vector<addin::RelaxGroup> groups = addin::GroupCables(f.drawing, boxes, config);
+  const double ng = static_cast<double>(groups.size());
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const addin::RelaxGroup& group = groups[g];
+    const std::string label = addin::GroupLabel(f.drawing, group);
+    // Continuation steps report inside the group's share of the bar and may cancel too.
     options.statics.progress = [&](double fraction, const std::string& stage) {
       if (!progress) return true;
-      cancelled = cancelled || !progress((i + 0.1 + 0.8 * fraction) / n, name + ": " + stage);
+      cancelled = cancelled || !progress((g + 0.1 + 0.8 * fraction) / ng, label + ": " + stage);
       return !cancelled;
     };
-    if (!cancelled && progress) cancelled = !progress((i + 0.05) / n, "relax " + name);
-    if (cancelled) {
-      f.cable_errors[i] = "cancelled";
-      continue;
-    }
+    if (!cancelled && progress) cancelled = !progress((g + 0.05) / ng, "relax " + label);
+    std::string problem = cancelled ? "cancelled" : "";
+    std::vector<addin::CableRelaxation> done;
     t0 = Clock::now();
-    try {
-      const ScopedDeadline deadline(timeout);  // the solvers check it (core/deadline.h)
-      addin::CableSetup setup = addin::SetUpCable(f.drawing, static_cast<int>(i), boxes, config);
-      addin::CableRelaxation r =
-          addin::RelaxCable(std::move(setup), options, config.min_bend_radius_factor);
-      if (cancelled) {
-        f.cable_errors[i] = "cancelled";
-      } else if (!r.result.converged) {
-        f.cable_errors[i] = "the solver did not converge: " + r.result.solution.summary.message;
-      } else {
-        f.cables[i] = std::move(r);
+    if (problem.empty()) {
+      try {
+        const ScopedDeadline deadline(timeout);  // the solvers check it (core/deadline.h)
+        if (group.network()) {
+          addin::GroupRelaxation r =
+              addin::RelaxNetworkGroup(f.drawing, group, boxes, config, options);
+          done = std::move(r.cables);
+          f.networks.push_back(std::move(r.json));
+        } else {
+          addin::CableSetup setup = addin::SetUpCable(f.drawing, group.cables.front(), boxes,
+                                                      config);
+          done.push_back(
+              addin::RelaxCable(std::move(setup), options, config.min_bend_radius_factor));
+        }
+        for (const addin::CableRelaxation& r : done) {
+          if (!r.result.converged && problem.empty())
+            problem = "the solver did not converge: " + r.result.solution.summary.message;
+        }
+        if (cancelled) problem = "cancelled";
+      } catch (...) {
+        problem = ProblemOf(std::current_exception());
       }
-    } catch (...) {
-      f.cable_errors[i] = ProblemOf(std::current_exception());
+    }
+    if (problem.empty()) {
+      for (addin::CableRelaxation& r : done) {
+        const size_t c = static_cast<size_t>(r.setup.cable);
+        f.cables[c] = std::move(r);
+      }
+    } else {
+      for (int c : group.cables) f.cable_errors[static_cast<size_t>(c)] = problem;
     }
     f.times.relax += Since(t0);
   }
