@@ -11,6 +11,7 @@
 #include "cablefit/core/rod_simulation.h"
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/mesh_file.h"
+#include "relax_route.h"
 
 namespace cablefit::addin {
 namespace {
@@ -95,6 +96,14 @@ Polyline ForWriting(const Polyline& relaxed, double diameter, double per_diamete
   return SampleCenterline(relaxed, UniformArcLengths(length, n));
 }
 
+Polyline AsDrawnForWriting(const Polyline& drawn, double diameter, double per_diameter) {
+  try {
+    return ForWriting(CleanRoute(drawn), diameter, per_diameter);
+  } catch (const InvalidInput&) {
+    return drawn;  // the writer reports what is wrong with it
+  }
+}
+
 }  // namespace
 
 void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
@@ -106,8 +115,11 @@ void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
       RelaxedCable rc;
       rc.source_cable = static_cast<int>(i);
       rc.diameter = OutputDiameter(f, static_cast<int>(i), config);
+      // A failed cable is written as drawn, resampled like a relaxed one: the raw skeleton of a
+      // mesh tube is too jagged for OCCT's pipe sweep (it crashed on one).
       rc.centreline = f.cables[i] ? ForWriting(f.cables[i]->relaxed, rc.diameter, per_diameter)
-                                  : f.drawing.cables[i].centreline;
+                                  : AsDrawnForWriting(f.drawing.cables[i].centreline, rc.diameter,
+                                                      per_diameter);
       out.push_back(std::move(rc));
     }
     try {
