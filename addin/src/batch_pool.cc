@@ -1,5 +1,7 @@
 #include "batch_pool.h"
 
+#include "cablefit/core/errors.h"
+
 #include <algorithm>
 #include <atomic>
 #include <thread>
@@ -35,6 +37,18 @@ std::vector<std::exception_ptr> RunBatch(int items, int jobs,
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
   return errors;
+}
+
+std::string ErrorText(const std::exception_ptr& e) {
+  try {
+    std::rethrow_exception(e);
+  } catch (const FileError& fe) {
+    return fe.problem();
+  } catch (const std::exception& ex) {
+    return ex.what();
+  } catch (...) {
+    return "unknown error";
+  }
 }
 
 }  // namespace cablefit::addin

@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace cablefit::addin {
@@ -17,5 +18,9 @@ int ResolveJobs(int requested, int items);
 /// escaping `work(i)` is stored at index i of the result (null where the item succeeded) and
 /// does not stop the other items. Work items must not share mutable state without locking.
 std::vector<std::exception_ptr> RunBatch(int items, int jobs, const std::function<void(int)>& work);
+
+/// The one-line problem of an item's exception: a FileError's problem without its file name (the
+/// caller names the file), another exception's what().
+std::string ErrorText(const std::exception_ptr& e);
 
 }  // namespace cablefit::addin

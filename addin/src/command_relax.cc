@@ -98,18 +98,6 @@ std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
   return buf;
 }
 
-std::string ErrorText(const std::exception_ptr& e) {
-  try {
-    std::rethrow_exception(e);
-  } catch (const FileError& fe) {
-    return fe.problem();
-  } catch (const std::exception& ex) {
-    return ex.what();
-  } catch (...) {
-    return "unknown error";
-  }
-}
-
 int RunRelax(const RelaxArgs& a) {
   const auto start = Clock::now();
   const double unit = UnitInMetres(a.unit);
@@ -180,11 +168,7 @@ int RunRelax(const RelaxArgs& a) {
   std::vector<std::vector<OrientedBox>> boxes(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) {
     RelaxedFile& f = files[static_cast<size_t>(i)];
-    for (const DrawnSolid& s : f.drawing.solids) {
-      OrientedBox box;  // a solid without tessellation holds nothing (empty box)
-      if (s.mesh.vertices.cols() > 0) box = BoundingBoxOf(s.mesh);
-      boxes[static_cast<size_t>(i)].push_back(box);
-    }
+    boxes[static_cast<size_t>(i)] = SolidBoxes(f.drawing);
     if (!f.read_ok) continue;
     try {
       for (RelaxGroup& g : GroupCables(f.drawing, boxes[static_cast<size_t>(i)], config))
@@ -204,25 +188,13 @@ int RunRelax(const RelaxArgs& a) {
                f.stem + ": relax " + label);
     const auto t0 = Clock::now();
     const ScopedDeadline deadline(a.timeout);  // the solver checks it (core/deadline.h)
-    std::string problem;
-    std::vector<CableRelaxation> done;
-    try {
-      if (job.group.network()) {
-        GroupRelaxation g =
-            RelaxNetworkGroup(f.drawing, job.group, boxes[static_cast<size_t>(job.file)], config, sim_options);
-        done = std::move(g.cables);
-        std::lock_guard lock(network_mutex);
-        f.networks.push_back(std::move(g.json));
-      } else {
-        CableSetup setup = SetUpCable(f.drawing, job.group.cables.front(),
-                                      boxes[static_cast<size_t>(job.file)], config);
-        done.push_back(RelaxCable(std::move(setup), sim_options, config.min_bend_radius_factor));
-      }
-      for (const CableRelaxation& r : done)
-        if (!r.result.converged && problem.empty())
-          problem = "the solver did not converge: " + r.result.solution.summary.message;
-    } catch (...) {
-      problem = ErrorText(std::current_exception());
+    GroupOutcome g = RelaxGroupCables(f.drawing, job.group, boxes[static_cast<size_t>(job.file)],
+                                      config, sim_options);
+    const std::string& problem = g.problem;
+    std::vector<CableRelaxation>& done = g.cables;
+    if (!g.network.is_null()) {
+      std::lock_guard lock(network_mutex);
+      f.networks.push_back(std::move(g.network));
     }
     if (problem.empty()) {
       for (CableRelaxation& r : done) {

@@ -9,6 +9,7 @@
 
 #include "cablefit/core/errors.h"
 #include "cablefit/core/network_simulation.h"
+#include "batch_pool.h"
 #include "relax_route.h"
 
 namespace cablefit::addin {
@@ -256,6 +257,38 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
               {"estimated_error", NumberOrNull(error)},
               {"message", fine.summary.message},
               {"seconds", seconds}};
+  return out;
+}
+
+std::vector<OrientedBox> SolidBoxes(const HarnessDrawing& drawing) {
+  std::vector<OrientedBox> boxes;
+  for (const DrawnSolid& s : drawing.solids) {
+    OrientedBox box;  // a solid without tessellation holds nothing (empty box)
+    if (s.mesh.vertices.cols() > 0) box = BoundingBoxOf(s.mesh);
+    boxes.push_back(box);
+  }
+  return boxes;
+}
+
+GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& group,
+                              const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                              const SimulationOptions& options) {
+  GroupOutcome out;
+  try {
+    if (group.network()) {
+      GroupRelaxation g = RelaxNetworkGroup(drawing, group, boxes, config, options);
+      out.cables = std::move(g.cables);
+      out.network = std::move(g.json);
+    } else {
+      CableSetup setup = SetUpCable(drawing, group.cables.front(), boxes, config);
+      out.cables.push_back(RelaxCable(std::move(setup), options, config.min_bend_radius_factor));
+    }
+    for (const CableRelaxation& r : out.cables)
+      if (!r.result.converged && out.problem.empty())
+        out.problem = "the solver did not converge: " + r.result.solution.summary.message;
+  } catch (...) {
+    out.problem = ErrorText(std::current_exception());
+  }
   return out;
 }
 

@@ -48,6 +48,22 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
                                   const std::vector<OrientedBox>& boxes,
                                   const HarnessConfig& config, const SimulationOptions& options);
 
+/// One box per drawing solid, in order (empty for a solid without tessellation): what
+/// SetUpCable and GroupCables take.
+std::vector<OrientedBox> SolidBoxes(const HarnessDrawing& drawing);
+
+/// One group relaxed, the way `cablefit relax` and the CAD add-in both do it: the network solve
+/// or the single-rod one. On failure `problem` is one line (exception or non-convergence) and
+/// `cables` must not be used; `network` is the group's JSON (null for a single rod).
+struct GroupOutcome {
+  std::vector<CableRelaxation> cables;
+  json::Json network;
+  std::string problem;
+};
+GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& group,
+                              const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                              const SimulationOptions& options);
+
 /// A one-line label of a group: its cable names, comma separated.
 std::string GroupLabel(const HarnessDrawing& drawing, const RelaxGroup& group);
 

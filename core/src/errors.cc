@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 namespace cablefit {
 
@@ -32,6 +33,13 @@ void AbortOnBrokenInvariant(const char* condition, const char* file, int line,
   std::fprintf(stderr, "cablefit: internal error: %s (%s) at %s:%d\n", message.c_str(), condition,
                file, line);
   std::abort();
+}
+
+std::string MessageNumber(double value) {
+  std::ostringstream os;
+  os.precision(4);
+  os << value;
+  return os.str();
 }
 
 }  // namespace cablefit

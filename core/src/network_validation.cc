@@ -12,12 +12,7 @@
 namespace cablefit {
 namespace {
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
-}
+std::string Num(double v) { return MessageNumber(v); }
 
 int Find(std::vector<int>& root, int i) {
   while (root[i] != i) i = root[i] = root[root[i]];

@@ -12,12 +12,7 @@
 namespace cablefit {
 namespace {
 
-std::string Num(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
-}
+std::string Num(double v) { return MessageNumber(v); }
 
 bool Finite(const Vec3& v) { return v.allFinite(); }
 

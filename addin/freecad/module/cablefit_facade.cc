@@ -15,6 +15,7 @@
 #include "harness_config.h"
 #include "relax_cable.h"
 #include "relax_file.h"
+#include "batch_pool.h"
 #include "relax_network.h"
 #include "relax_report.h"
 #include "report_case.h"
@@ -33,20 +34,6 @@ using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// The one-line problem of an exception, without the file name when it is a FileError (the
-// caller knows which file it passed).
-std::string ProblemOf(const std::exception_ptr& e) {
-  try {
-    std::rethrow_exception(e);
-  } catch (const FileError& fe) {
-    return fe.problem();
-  } catch (const std::exception& ex) {
-    return ex.what();
-  } catch (...) {
-    return "unknown error";
-  }
 }
 
 CableSummary Summarise(const addin::RelaxedFile& f, const addin::HarnessConfig& config, int i) {
@@ -117,12 +104,7 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   f.cables.resize(n);
   f.cable_errors.resize(n);
 
-  std::vector<addin::OrientedBox> boxes;
-  for (const DrawnSolid& s : f.drawing.solids) {
-    addin::OrientedBox box;  // a solid without tessellation holds nothing (empty box)
-    if (s.mesh.vertices.cols() > 0) box = addin::BoundingBoxOf(s.mesh);
-    boxes.push_back(box);
-  }
+  const std::vector<addin::OrientedBox> boxes = addin::SolidBoxes(f.drawing);
   // The CLI's groups: a single cable, or cables solved together as one network (joined at
   // breakouts, or with contact against nearby solids).
   const std::vector<addin::RelaxGroup> groups = addin::GroupCables(f.drawing, boxes, config);
@@ -141,27 +123,11 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
     std::vector<addin::CableRelaxation> done;
     t0 = Clock::now();
     if (problem.empty()) {
-      try {
-        const ScopedDeadline deadline(timeout);  // the solvers check it (core/deadline.h)
-        if (group.network()) {
-          addin::GroupRelaxation r =
-              addin::RelaxNetworkGroup(f.drawing, group, boxes, config, options);
-          done = std::move(r.cables);
-          f.networks.push_back(std::move(r.json));
-        } else {
-          addin::CableSetup setup = addin::SetUpCable(f.drawing, group.cables.front(), boxes,
-                                                      config);
-          done.push_back(
-              addin::RelaxCable(std::move(setup), options, config.min_bend_radius_factor));
-        }
-        for (const addin::CableRelaxation& r : done) {
-          if (!r.result.converged && problem.empty())
-            problem = "the solver did not converge: " + r.result.solution.summary.message;
-        }
-        if (cancelled) problem = "cancelled";
-      } catch (...) {
-        problem = ProblemOf(std::current_exception());
-      }
+      const ScopedDeadline deadline(timeout);  // the solvers check it (core/deadline.h)
+      addin::GroupOutcome r = addin::RelaxGroupCables(f.drawing, group, boxes, config, options);
+      problem = cancelled ? "cancelled" : r.problem;
+      done = std::move(r.cables);
+      if (!r.network.is_null()) f.networks.push_back(std::move(r.network));
     }
     if (problem.empty()) {
       for (addin::CableRelaxation& r : done) {

@@ -14,6 +14,7 @@
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/json_util.h"
 #include "cli_runner.h"
+#include "relax_test_util.h"
 #include "test_support.h"
 
 namespace cablefit {
@@ -21,15 +22,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using json::Json;
+using testing::CableNamed;
+using testing::Q;
 using testing::RunCablefit;
 
-// Shell-quoted path. Built with append: GCC 12 warns (-Wrestrict, a false positive) on
-// "'" + std::string.
-std::string Q(const fs::path& p) {
-  std::string q(1, '\'');
-  q.append(p.string()).push_back('\'');
-  return q;
-}
 fs::path Sample(const std::string& name) { return testing::SourceDir() / "samples/harness" / name; }
 
 void WriteText(const fs::path& path, const std::string& text) {
@@ -48,12 +44,6 @@ fs::path WriteOneCableStep(const fs::path& path, const Polyline& centreline, dou
   drawing.cables.push_back(cable);
   WriteRelaxedStep(path.string(), drawing, {RelaxedCable{0, centreline, diameter}});
   return path;
-}
-
-const Json& CableNamed(const Json& file, const std::string& name) {
-  for (const Json& c : file.at("cables"))
-    if (c.at("name") == name) return c;
-  throw std::runtime_error("no cable " + name);
 }
 
 TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
@@ -94,9 +84,10 @@ TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
     // Held ends stay at their drawn positions.
     const Json& rows = c.at("relaxed_centreline").at("rows");
     const Json& first = c.at("supports").front();
-    if (first.at("s").get<double>() == 0.0)
+    if (first.at("s").get<double>() == 0.0) {
       for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(rows.front()[k + 1].get<double>(), first.at("position")[k].get<double>(), 1e-9);
+    }
     EXPECT_GT(c.at("deviation").at("max").get<double>(), 0.0) << name;
     EXPECT_GE(c.at("deviation").at("max").get<double>(), c.at("deviation").at("rms").get<double>());
     EXPECT_EQ(c.at("supports").front().at("reaction").at("force").size(), 3u);

@@ -11,6 +11,7 @@
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/json_util.h"
 #include "cli_runner.h"
+#include "relax_test_util.h"
 #include "test_support.h"
 
 namespace cablefit {
@@ -18,13 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using json::Json;
+using testing::CableNamed;
+using testing::Q;
 using testing::RunCablefit;
-
-std::string Q(const fs::path& p) {
-  std::string q(1, '\'');
-  q.append(p.string()).push_back('\'');
-  return q;
-}
 
 Polyline Line(const Vec3& a, const Vec3& b) {
   Polyline p;
@@ -50,12 +47,6 @@ fs::path WriteSplicedPair(const fs::path& path) {
   }
   WriteRelaxedStep(path.string(), drawing, out);
   return path;
-}
-
-const Json& CableNamed(const Json& file, const std::string& name) {
-  for (const Json& c : file.at("cables"))
-    if (c.at("name") == name) return c;
-  throw std::runtime_error("no cable " + name);
 }
 
 // The clamped-clamped beam of relax_cli_test (far end sliding axially), cut in two and spliced

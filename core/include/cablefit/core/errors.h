@@ -11,6 +11,9 @@ namespace cablefit {
 /// name or a quoted value from a file cannot split an error message over several lines.
 std::string OneLine(const std::string& text);
 
+/// A number for an error message: 4 significant digits ("0.3118", "1e-05").
+std::string MessageNumber(double value);
+
 /// Bad user input: a value, file or set-up that cannot be used. `what()` is one line, without
 /// the file name; the layer that knows the file (formats/, addin/) adds it.
 class InvalidInput : public std::runtime_error {
