@@ -15,6 +15,29 @@
 namespace cablefit {
 namespace {
 
+// Drops points within `min_gap` [m] of the previous kept one (the last point replaces a kept
+// one too close to it): repeated points from chained edges or a stalled solver give zero-length
+// spline parameter steps, and a median gap of zero would make FillLongGaps divide by zero.
+Eigen::Matrix3Xd DropNearDuplicates(const Eigen::Matrix3Xd& points, double min_gap) {  // 3 x n [m]
+  std::vector<Eigen::Index> keep{0};
+  for (Eigen::Index i = 1; i < points.cols(); ++i) {
+    if ((points.col(i) - points.col(keep.back())).norm() > min_gap) keep.push_back(i);
+  }
+  const Eigen::Index last = points.cols() - 1;
+  if (keep.back() != last) {
+    if (keep.size() > 1) {
+      keep.back() = last;
+    } else {
+      keep.push_back(last);
+    }
+  }
+  Eigen::Matrix3Xd result(3, static_cast<Eigen::Index>(keep.size()));  // 3 x m [m]
+  for (size_t k = 0; k < keep.size(); ++k) {
+    result.col(static_cast<Eigen::Index>(k)) = points.col(keep[k]);
+  }
+  return result;
+}
+
 // Adds points along segments longer than twice the median spacing: a B-spline fitted to
 // unevenly spaced points (a long straight stretch given by its two ends next to a densely
 // sampled bend) swings between them. Other points are kept as they are.
@@ -58,8 +81,13 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       if (relaxed.centreline.size() < 2 || !relaxed.centreline.points.allFinite()) {
         throw InvalidInput("the relaxed centreline needs at least 2 finite points");
       }
-      const Eigen::Matrix3Xd points =
-          FillLongGaps(relaxed.centreline.points) / kMetresPerOcctUnit;  // 3 x m [mm]
+      // A thousandth of the diameter: well below the spline tolerance below.
+      const Eigen::Matrix3Xd distinct =
+          DropNearDuplicates(relaxed.centreline.points, 1e-3 * diameter);  // 3 x m [m]
+      if ((distinct.col(distinct.cols() - 1) - distinct.col(0)).norm() <= 1e-3 * diameter) {
+        throw InvalidInput("the relaxed centreline has no length");
+      }
+      const Eigen::Matrix3Xd points = FillLongGaps(distinct) / kMetresPerOcctUnit;  // 3 x m [mm]
       // Approximation tolerance well below the 1 %-of-diameter accuracy promised for read-back.
       const double tolerance = std::min(0.01, 1e-3 * diameter / kMetresPerOcctUnit);  // [mm]
       const TopoDS_Wire spine =

@@ -2,19 +2,18 @@
 
 #include <BRepAdaptor_CompCurve.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
-#include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepOffsetAPI_MakePipeShell.hxx>
 #include <TopExp_Explorer.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
 #include <TColgp_Array1OfPnt.hxx>
-#include <TopoDS_Face.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
+
+#include <string>
 
 #include "cablefit/core/errors.h"
 
@@ -50,6 +49,7 @@ TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
 
 TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
   if (!(diameter > 0)) throw InvalidInput("a tube needs a positive diameter");
+  std::string problem = "could not sweep the tube along the centreline";
   try {
     BRepAdaptor_CompCurve curve(spine);
     gp_Pnt start;
@@ -59,23 +59,31 @@ TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
     const gp_Circ circle(gp_Ax2(start, gp_Dir(tangent)), 0.5 * diameter);
     const TopoDS_Wire profile =
         BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire();
-    const TopoDS_Face disc = BRepBuilderAPI_MakeFace(profile, /*OnlyPlane=*/true).Face();
-    {
-      BRepOffsetAPI_MakePipe pipe(spine, disc);
-      pipe.Build();
-      // MakePipe can return a "solid" of the two caps alone when its surface approximation
-      // fails on a spine with many knots: accept only a valid solid with a lateral face.
-      if (pipe.IsDone() && IsValidTube(pipe.Shape())) return pipe.Shape();
+    // Never BRepOffsetAPI_MakePipe with a disc: in OCCT 7.6 BRepFill_Pipe::MakeShape ignores a
+    // failed BRepFill_Sweep and calls ShapeType() on the empty faces it left (null read,
+    // SIGSEGV). The pipe shell checks the sweep's status, so a failure is an answer here.
+    // Corrected Frenet first (a smooth frame); the discrete trihedron where it fails: on a
+    // nearly straight stretch with sub-micrometre noise (a mesh skeleton) the Frenet normal is
+    // undefined and the corrected-Frenet sweep's surface approximation gives up.
+    for (const bool discrete : {false, true}) {
+      try {
+        BRepOffsetAPI_MakePipeShell shell(spine);
+        if (discrete) {
+          shell.SetDiscreteMode();
+        } else {
+          shell.SetMode(/*IsFrenet=*/false);
+        }
+        shell.Add(profile);
+        shell.Build();
+        if (shell.IsDone() && shell.MakeSolid() && IsValidTube(shell.Shape())) return shell.Shape();
+      } catch (const Standard_Failure& e) {
+        problem = std::string("could not sweep the tube: ") + e.GetMessageString();
+      }
     }
-    BRepOffsetAPI_MakePipeShell shell(spine);
-    shell.SetMode(/*IsFrenet=*/false);  // corrected Frenet, as MakePipe
-    shell.Add(profile);
-    shell.Build();
-    if (shell.IsDone() && shell.MakeSolid() && IsValidTube(shell.Shape())) return shell.Shape();
-    throw InvalidInput("could not sweep the tube along the centreline");
   } catch (const Standard_Failure& e) {
     throw InvalidInput(std::string("could not sweep the tube: ") + e.GetMessageString());
   }
+  throw InvalidInput(problem);
 }
 
 }  // namespace cablefit

@@ -15,7 +15,8 @@ namespace cablefit {
 TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance);
 
 /// A solid tube of `diameter` swept along `spine` by a circle normal to the spine's start
-/// (BRepOffsetAPI_MakePipe, corrected Frenet frame). Throws InvalidInput on failure.
+/// (BRepOffsetAPI_MakePipeShell: corrected Frenet frame, else the discrete trihedron), capped.
+/// Throws InvalidInput when neither sweep gives a valid solid.
 TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter);
 
 }  // namespace cablefit
