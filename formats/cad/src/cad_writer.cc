@@ -10,6 +10,7 @@
 #include "cad_shape_handle.h"
 #include "occt_session.h"
 #include "occt_tube.h"
+#include "tube_in_child.h"
 #include "xde_document.h"
 
 namespace cablefit {
@@ -92,7 +93,7 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       const double tolerance = std::min(0.01, 1e-3 * diameter / kMetresPerOcctUnit);  // [mm]
       const TopoDS_Wire spine =
           BRepBuilderAPI_MakeWire(MakeSplineEdge(points, tolerance)).Wire();
-      const TopoDS_Shape tube = MakeTubeSolid(spine, diameter / kMetresPerOcctUnit);
+      const TopoDS_Shape tube = MakeTubeSolidInChild(spine, diameter / kMetresPerOcctUnit);
       AddNamedShape(doc, tube, drawn.name,
                     drawn.has_color ? std::optional<SrgbColor>(drawn.color) : std::nullopt);
     } catch (const InvalidInput& e) {

@@ -5,9 +5,23 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace cablefit {
+
+/// How a forked child ended.
+struct ChildOutcome {
+  int signal = 0;          // the signal that ended it, 0 when it exited
+  int exit_code = 0;       // its exit status when it exited
+  bool timed_out = false;  // still running after the limit (then killed)
+};
+
+/// Calls `body` in a forked child (stdout/stderr to /dev/null, exit status = its return value,
+/// 1 when it throws) and waits at most `max_seconds` for it. std::nullopt when fork() fails or
+/// the child is lost: the caller then does the work in this process.
+std::optional<ChildOutcome> RunInChildProcess(const std::function<int()>& body,
+                                              double max_seconds);
 
 /// Calls `read` in a forked child (its output discarded, its exceptions ignored: the real read
 /// in this process reports those). Throws FileError(path, ...) when the child dies by a signal
