@@ -116,7 +116,8 @@ void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
       rc.source_cable = static_cast<int>(i);
       rc.diameter = OutputDiameter(f, static_cast<int>(i), config);
       // A failed cable is written as drawn, resampled like a relaxed one: the raw skeleton of a
-      // mesh tube is too jagged for OCCT's pipe sweep (it crashed on one).
+      // mesh tube is unevenly spaced, which makes the B-spline through it swing. (The crash once
+      // seen here was OCCT's MakePipe on a smooth spine; the writer no longer uses it.)
       rc.centreline = f.cables[i] ? ForWriting(f.cables[i]->relaxed, rc.diameter, per_diameter)
                                   : AsDrawnForWriting(f.drawing.cables[i].centreline, rc.diameter,
                                                       per_diameter);
