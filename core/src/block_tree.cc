@@ -68,7 +68,6 @@ bool BlockTreeLdlt::Factorize(const BlockTree& a, double shift) {
   pivot_inv_.resize(n);
   negative_ = 0;
   zero_ = 0;
-  min_pivot_ = std::numeric_limits<double>::infinity();
   double scale = 0.0;
   for (int i = 0; i < n; ++i) scale = std::max(scale, a.Diag(i).cwiseAbs().maxCoeff());
   scale = std::max(scale, std::abs(shift));
@@ -83,7 +82,6 @@ bool BlockTreeLdlt::Factorize(const BlockTree& a, double shift) {
     eig.computeDirect(p, Eigen::EigenvaluesOnly);
     for (int k = 0; k < 3; ++k) {
       const double ev = eig.eigenvalues()[k];
-      min_pivot_ = std::min(min_pivot_, ev);
       if (std::abs(ev) <= zero_tol)
         ++zero_;
       else if (ev < 0)

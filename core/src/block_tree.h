@@ -53,8 +53,6 @@ class BlockTreeLdlt {
   /// Number of negative / (numerically) zero eigenvalues of A + shift I.
   int NegativeCount() const { return negative_; }
   int ZeroCount() const { return zero_; }
-  /// Smallest eigenvalue among the pivot blocks (a cheap conditioning indicator).
-  double MinPivotEigenvalue() const { return min_pivot_; }
   /// Solves (A + shift I) x = b in place; b is 3n x k. Row-major keeps each block's rows
   /// contiguous when k is large (many right-hand sides, as in the KKT Schur complement).
   using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -68,7 +66,6 @@ class BlockTreeLdlt {
   std::vector<Eigen::Matrix3d> pivot_inv_;  // P_i^{-1}
   int negative_ = 0;
   int zero_ = 0;
-  double min_pivot_ = 0.0;
 };
 
 }  // namespace cablefit

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "block_tree.h"
+#include "kkt_ldlt.h"
 #include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "quaternion.h"
@@ -96,26 +97,23 @@ void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha,
   AlignQuaternionSigns(model, state);
 }
 
-// Inertia of the KKT matrix [H C^T; C 0] = inertia(H) + inertia(-C H^-1 C^T): the reduced
-// Hessian is positive definite iff H has as many negative eigenvalues as S = C H^-1 C^T has
-// positive ones missing, i.e. neg(H) + pos(S) == m.
 struct KktSolve {
   bool ok = false;
-  int negative_directions = 0;
-  double min_pivot = 0.0;
+  int negative_directions = 0;  // of the reduced Hessian (unstable directions on the manifold)
   Eigen::VectorXd step;    // 3n
   Eigen::VectorXd lambda;  // m
 };
 
-KktSolve SolveKkt(const BlockTree& h_masked, const Evaluation& ev,
-                  const std::vector<char>& free, double mu) {
+// The same system through the Schur complement S = C H^-1 C^T (O(n m) + O(m^3)): its inertia
+// is inertia(H) + inertia(-S) and, unlike the block elimination, it can regularise rank-deficient
+// support rows. Used only when KktLdlt reports them.
+KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& ev,
+                                   const std::vector<char>& free, double mu) {
   KktSolve out;
   BlockTree h = h_masked;
   if (mu != 0.0) ShiftFree(free, mu, &h);
   BlockTreeLdlt ldlt;
-  const bool factored = ldlt.Factorize(h, 0.0);
-  out.min_pivot = ldlt.MinPivotEigenvalue();
-  if (!factored) return out;
+  if (!ldlt.Factorize(h, 0.0)) return out;
   const int m = static_cast<int>(ev.c.size());
   const int n3 = static_cast<int>(ev.gradient.size());
   BlockTreeLdlt::RowMajorMatrix rhs(n3, 1 + m);
@@ -162,6 +160,24 @@ KktSolve SolveKkt(const BlockTree& h_masked, const Evaluation& ev,
     out.step = -rhs.col(0);
   }
   out.negative_directions = neg;
+  out.ok = true;
+  return out;
+}
+
+// The Newton system by the O(n) block elimination of the whole KKT matrix (kkt_ldlt.h).
+KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const BlockTree& h_masked,
+                  const Evaluation& ev, const std::vector<char>& free, double mu) {
+  switch (kkt->Factorize(model, h_masked, ev.jac, free, mu)) {
+    case KktLdlt::Status::kSingularPivot:
+      return KktSolve{};
+    case KktLdlt::Status::kRankDeficient:
+      return SolveKktBySchurComplement(h_masked, ev, free, mu);
+    case KktLdlt::Status::kOk:
+      break;
+  }
+  KktSolve out;
+  kkt->Solve(ev.gradient, ev.c, &out.step, &out.lambda);
+  out.negative_directions = kkt->NegativeCount() - static_cast<int>(ev.c.size());
   out.ok = true;
   return out;
 }
@@ -246,6 +262,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
   ApplySupportTargets(model, state);
   Evaluation ev;
+  KktLdlt kkt_ldlt;  // analysed at the first iteration, reused while the pattern holds
   double nu = 0.0;
   bool first = true;
   for (int iter = 0;; ++iter) {
@@ -278,7 +295,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     const double scale = HessianScale(ev.hessian);
     KktSolve kkt;
     for (double mu = 0.0;;) {
-      kkt = SolveKkt(ev.hessian, ev, free, mu);
+      kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
       if (kkt.ok && kkt.negative_directions == 0) break;
       mu = mu == 0.0 ? 1e-8 * scale : 10.0 * mu;
       if (mu > 1e6 * scale) {
@@ -354,8 +371,8 @@ void EvaluateStability(const RodModel& model, const RodState& state, StaticsSumm
   Evaluation ev;
   Evaluate(model, state, true, &state.lambda, free, &ev);
   MaskHessian(free, &ev.hessian);
-  KktSolve kkt = SolveKkt(ev.hessian, ev, free, 0.0);
-  summary->min_pivot = kkt.min_pivot;
+  KktLdlt kkt_ldlt;
+  KktSolve kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, 0.0);
   summary->stable = kkt.ok && kkt.negative_directions == 0;
   summary->negative_directions = kkt.ok ? kkt.negative_directions : -1;
 }

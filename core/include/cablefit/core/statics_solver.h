@@ -61,7 +61,6 @@ struct StaticsSummary {
   /// constraint manifold is positive definite (Sylvester inertia of the KKT matrix).
   bool stable = false;
   int negative_directions = 0;    // unstable directions on the constraint manifold
-  double min_pivot = 0.0;         // smallest pivot eigenvalue (near 0: close to a bifurcation)
   bool converged() const { return termination == TerminationType::kConverged; }
   std::string BriefReport() const;
 };
