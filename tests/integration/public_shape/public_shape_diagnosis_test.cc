@@ -76,9 +76,7 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
     EXPECT_LT(dg.fitted_max, 0.2 * dg.baseline_max) << d;
   }
   std::printf("identified %d of %zu\n", correct, dirs.size());
-  // twist_preload is not separable from the unknown nominal twist of the reference data (see
-  // shape_diagnosis.cc); every other public shape case must be identified.
-  EXPECT_GE(correct, static_cast<int>(dirs.size()) - 1);
+  EXPECT_EQ(correct, static_cast<int>(dirs.size()));
 }
 
 }  // namespace

@@ -35,6 +35,10 @@ struct ShapeDiagnosisOptions {
   double min_bic_gain = 10.0;
   /// Only use at most this many observation points (evenly thinned) in the fits.
   int max_points = 400;
+  /// How far the far clamp's twist about the cable axis may be from the nominal one (the case's
+  /// normal, or the torque-free twist) before it counts as a twist_preload [rad]: the standard
+  /// deviation of the prior on it. 0 = the twist is free in every model (no twist_preload).
+  double twist_sigma = 0.25;
   ProgressCallback progress;
 
   bool IsValid(std::string* why) const;
