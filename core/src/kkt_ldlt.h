@@ -29,7 +29,7 @@
 namespace cablefit {
 
 class KktLdlt {
-public:
+ public:
   enum class Status {
     kOk,
     /// A pivot of the frames is (numerically) singular: H + shift I is too
@@ -46,8 +46,7 @@ public:
   /// m] is added to the free rotations' diagonal. The structure is analysed
   /// again only when the Jacobian's pattern changes, so one object serves every
   /// Newton iteration of a model.
-  Status Factorize(const RodModel &model, const BlockTree &h,
-                   const SparseJacobian &jacobian,
+  Status Factorize(const RodModel &model, const BlockTree &h, const SparseJacobian &jacobian,
                    const std::vector<char> &free, double shift);
 
   /// Negative pivot eigenvalues of the last factorisation: rows + the unstable
@@ -56,12 +55,11 @@ public:
 
   /// Solves the last factorised system for the right-hand side (g, c): step (3
   /// items) [rad], lambda (rows) [N].
-  void Solve(const Eigen::VectorXd &g, const Eigen::VectorXd &c,
-             Eigen::VectorXd *step, Eigen::VectorXd *lambda) const;
+  void Solve(const Eigen::VectorXd &g, const Eigen::VectorXd &c, Eigen::VectorXd *step,
+             Eigen::VectorXd *lambda) const;
 
-private:
-  void Analyze(const RodModel &model, const BlockTree &h,
-               const SparseJacobian &jacobian);
+ private:
+  void Analyze(const RodModel &model, const BlockTree &h, const SparseJacobian &jacobian);
   bool SamePattern(const SparseJacobian &jacobian) const;
 
   // Blocks: items 0 .. ni-1 (3 unknowns each), then one per support with rows
@@ -69,11 +67,10 @@ private:
   // every block is a Matrix3d).
   int num_items_ = 0;
   int num_rows_ = 0;
-  std::vector<int> order_;     // blocks in elimination order
-  std::vector<int> row_first_; // per row block: its first constraint row
-  std::vector<int> row_count_; // per row block: its rows
-  std::vector<int>
-      block_of_row_; // constraint row -> row block (index from num_items_)
+  std::vector<int> order_;         // blocks in elimination order
+  std::vector<int> row_first_;     // per row block: its first constraint row
+  std::vector<int> row_count_;     // per row block: its rows
+  std::vector<int> block_of_row_;  // constraint row -> row block (index from num_items_)
   // Column v of L below its pivot: entries column_start_[v] .. column_start_[v
   // + 1] - 1, each the block entry_block_[e] (later in the order, sorted by
   // position) and its 3x3 value entry_[e] (rows of that block, columns of v):
@@ -86,14 +83,12 @@ private:
   // entry i.
   std::vector<int> update_start_;
   std::vector<int> update_target_;
-  std::vector<Eigen::Matrix3d> pivot_; // per block: pivot, then its inverse
-  std::vector<int>
-      h_entry_; // per item with a parent: the entry of (parent, item)
-  std::vector<int>
-      jac_entry_; // per Jacobian non-zero: the entry of (row block, item)
-  std::vector<int> jac_outer_; // the pattern analysed for
+  std::vector<Eigen::Matrix3d> pivot_;  // per block: pivot, then its inverse
+  std::vector<int> h_entry_;            // per item with a parent: the entry of (parent, item)
+  std::vector<int> jac_entry_;          // per Jacobian non-zero: the entry of (row block, item)
+  std::vector<int> jac_outer_;          // the pattern analysed for
   std::vector<int> jac_inner_;
   int negative_ = 0;
 };
 
-} // namespace cablefit
+}  // namespace cablefit

@@ -8,51 +8,44 @@ namespace cablefit {
 namespace {
 
 Frame FrameOf(const SupportSpec &s) {
-  return Frame::FromTangentNormal(s.tangent, s.kind == SupportKind::kClamp
-                                                 ? s.normal
-                                                 : s.tangent.unitOrthogonal());
+  return Frame::FromTangentNormal(
+      s.tangent, s.kind == SupportKind::kClamp ? s.normal : s.tangent.unitOrthogonal());
 }
 
-} // namespace
+}  // namespace
 
 int NuisanceClampIndex(const RodSpec &nominal) {
   for (int k = static_cast<int>(nominal.supports.size()) - 1; k > 0; --k)
-    if (nominal.supports[k].kind == SupportKind::kClamp)
-      return k;
+    if (nominal.supports[k].kind == SupportKind::kClamp) return k;
   return -1;
 }
 
 void ApplyNuisanceTwist(int clamp, double angle, RodSpec *spec) {
-  if (clamp < 0)
-    return;
+  if (clamp < 0) return;
   SupportSpec &sp = spec->supports[clamp];
   sp.normal = Eigen::AngleAxisd(angle, sp.tangent.normalized()) * sp.normal;
 }
 
-std::vector<EffectModel>
-BuildEffectModels(const RodSpec &nominal,
-                  const std::vector<double> &reaction_moment) {
+std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
+                                           const std::vector<double> &reaction_moment) {
   const double L = nominal.length;
   const int nuis = NuisanceClampIndex(nominal);
   const int nn = nuis >= 0 ? 1 : 0;
   auto with_nuisance = [nominal, nuis](const Eigen::VectorXd &x, int k) {
     RodSpec s = nominal;
-    if (nuis >= 0)
-      ApplyNuisanceTwist(nuis, x[k], &s);
+    if (nuis >= 0) ApplyNuisanceTwist(nuis, x[k], &s);
     return s;
   };
   auto scales = [nn](std::initializer_list<double> phys) {
     Eigen::VectorXd s(static_cast<int>(phys.size()) + nn);
     int i = 0;
-    for (double v : phys)
-      s[i++] = v;
-    if (nn)
-      s[i] = 0.05;
+    for (double v : phys) s[i++] = v;
+    if (nn) s[i] = 0.05;
     return s;
   };
   std::vector<EffectModel> models;
 
-  { // none: only the nuisance.
+  {  // none: only the nuisance.
     EffectModel m;
     m.effect = "none";
     m.scale = scales({});
@@ -60,7 +53,7 @@ BuildEffectModels(const RodSpec &nominal,
     m.apply = [=](const Eigen::VectorXd &x) { return with_nuisance(x, 0); };
     models.push_back(m);
   }
-  { // Natural curvature over [c - w/2, c + w/2], material-frame components.
+  {  // Natural curvature over [c - w/2, c + w/2], material-frame components.
     EffectModel m;
     m.effect = "intrinsic_curvature";
     m.physical_parameters = 4;
@@ -78,8 +71,7 @@ BuildEffectModels(const RodSpec &nominal,
       NaturalCurvatureSpec nc;
       nc.s_start = std::clamp(x[0] - w / 2, 0.0, L);
       nc.s_end = std::clamp(x[0] + w / 2, 0.0, L);
-      if (nc.s_end <= nc.s_start)
-        nc.s_end = std::min(L, nc.s_start + 0.01 * L);
+      if (nc.s_end <= nc.s_start) nc.s_end = std::min(L, nc.s_start + 0.01 * L);
       nc.ramp = 0.2 * (nc.s_end - nc.s_start);
       nc.kappa = Vec3(x[2], x[3], 0.0);
       s.natural_curvature.push_back(nc);
@@ -88,9 +80,8 @@ BuildEffectModels(const RodSpec &nominal,
     models.push_back(m);
   }
   for (int k = 0; k < static_cast<int>(nominal.supports.size()); ++k) {
-    if (nominal.supports[k].kind == SupportKind::kPin)
-      continue;
-    EffectModel m; // Clamp held at another angle: rotation about d1 and d2.
+    if (nominal.supports[k].kind == SupportKind::kPin) continue;
+    EffectModel m;  // Clamp held at another angle: rotation about d1 and d2.
     m.effect = "clamp_orientation";
     m.clamp = k;
     m.physical_parameters = 2;
@@ -112,7 +103,7 @@ BuildEffectModels(const RodSpec &nominal,
     };
     models.push_back(m);
   }
-  { // Heavier or softer: only w/EI is observable; density scaled.
+  {  // Heavier or softer: only w/EI is observable; density scaled.
     EffectModel m;
     m.effect = "weight_stiffness_ratio";
     m.physical_parameters = 1;
@@ -126,7 +117,7 @@ BuildEffectModels(const RodSpec &nominal,
     };
     models.push_back(m);
   }
-  { // Anisotropic bending: B = EI expm([[u1, u2], [u2, -u1]]) keeps sqrt(Bmax
+  {  // Anisotropic bending: B = EI expm([[u1, u2], [u2, -u1]]) keeps sqrt(Bmax
     // Bmin) = EI and is smooth through the isotropic case.
     EffectModel m;
     m.effect = "anisotropic_bending";
@@ -147,13 +138,12 @@ BuildEffectModels(const RodSpec &nominal,
     };
     models.push_back(m);
   }
-  { // A support the model does not have: a point force at arc length sc.
+  {  // A support the model does not have: a point force at arc length sc.
     EffectModel m;
     m.effect = "support_contact";
     m.physical_parameters = 4;
     m.names = {"s", "fx", "fy", "fz"};
-    const double w = std::max(1e-6, nominal.material.linear_density *
-                                        nominal.gravity.norm() * L);
+    const double w = std::max(1e-6, nominal.material.linear_density * nominal.gravity.norm() * L);
     m.scale = scales({0.01 * L, 0.05 * w, 0.05 * w, 0.05 * w});
     for (int i = 0; i < 8; ++i) {
       Eigen::VectorXd x = Eigen::VectorXd::Zero(4);
@@ -162,14 +152,12 @@ BuildEffectModels(const RodSpec &nominal,
     }
     m.apply = [=](const Eigen::VectorXd &x) {
       RodSpec s = with_nuisance(x, 4);
-      s.point_loads.push_back(
-          {std::clamp(x[0], 0.02 * L, 0.98 * L), Vec3(x[1], x[2], x[3])});
+      s.point_loads.push_back({std::clamp(x[0], 0.02 * L, 0.98 * L), Vec3(x[1], x[2], x[3])});
       return s;
     };
     models.push_back(m);
   }
-  if (nuis >=
-      0) { // The far clamp's twist itself, free of the prior on the nuisance.
+  if (nuis >= 0) {  // The far clamp's twist itself, free of the prior on the nuisance.
     EffectModel m;
     m.effect = "twist_preload";
     m.clamp = nuis;
@@ -177,8 +165,7 @@ BuildEffectModels(const RodSpec &nominal,
     m.has_nuisance = false;
     m.names = {"rotation"};
     m.scale = Eigen::VectorXd::Constant(1, 0.05);
-    m.starts = {Eigen::VectorXd::Zero(
-        1)}; // DiagnoseShape starts it from the fitted nuisance
+    m.starts = {Eigen::VectorXd::Zero(1)};  // DiagnoseShape starts it from the fitted nuisance
     m.apply = [=](const Eigen::VectorXd &x) {
       RodSpec s = nominal;
       ApplyNuisanceTwist(nuis, x[0], &s);
@@ -187,23 +174,19 @@ BuildEffectModels(const RodSpec &nominal,
     models.push_back(m);
   }
   for (int k = 0; k < static_cast<int>(nominal.supports.size()); ++k) {
-    if (nominal.supports[k].kind != SupportKind::kClamp)
-      continue;
-    EffectModel m; // Isotropic rotational compliance c = 1/k of a clamp.
+    if (nominal.supports[k].kind != SupportKind::kClamp) continue;
+    EffectModel m;  // Isotropic rotational compliance c = 1/k of a clamp.
     m.effect = "clamp_compliance";
     m.clamp = k;
     m.physical_parameters = 1;
     m.names = {"log_compliance"};
     m.scale = scales({0.2});
-    const double moment =
-        k < static_cast<int>(reaction_moment.size()) ? reaction_moment[k] : 0.0;
+    const double moment = k < static_cast<int>(reaction_moment.size()) ? reaction_moment[k] : 0.0;
     const double c0 = 0.02 / std::max(moment, 1e-9);
-    for (double f : {0.3, 3.0})
-      m.starts.push_back(Eigen::VectorXd::Constant(1, std::log(f * c0)));
+    for (double f : {0.3, 3.0}) m.starts.push_back(Eigen::VectorXd::Constant(1, std::log(f * c0)));
     m.apply = [=](const Eigen::VectorXd &x) {
       RodSpec s = with_nuisance(x, 1);
-      s.supports[k].compliance =
-          Mat3::Identity() * std::exp(std::clamp(x[0], -60.0, 20.0));
+      s.supports[k].compliance = Mat3::Identity() * std::exp(std::clamp(x[0], -60.0, 20.0));
       return s;
     };
     models.push_back(m);
@@ -211,4 +194,4 @@ BuildEffectModels(const RodSpec &nominal,
   return models;
 }
 
-} // namespace cablefit
+}  // namespace cablefit

@@ -17,12 +17,12 @@
 namespace cablefit {
 
 struct EffectModel {
-  std::string effect;             // catalogue name
-  int physical_parameters = 0;    // counted by the selection criterion
-  std::optional<int> clamp;       // clamp (support) index for clamp effects
-  std::vector<std::string> names; // physical parameter names (for reports)
-  Eigen::VectorXd scale; // typical size of every parameter (incl. the nuisance)
-  std::vector<Eigen::VectorXd> starts; // starting physical parameters
+  std::string effect;                   // catalogue name
+  int physical_parameters = 0;          // counted by the selection criterion
+  std::optional<int> clamp;             // clamp (support) index for clamp effects
+  std::vector<std::string> names;       // physical parameter names (for reports)
+  Eigen::VectorXd scale;                // typical size of every parameter (incl. the nuisance)
+  std::vector<Eigen::VectorXd> starts;  // starting physical parameters
   /// Carries the nuisance twist as its last parameter (all but twist_preload).
   bool has_nuisance = true;
   /// Parameters (physical..., nuisance twist) -> the changed spec.
@@ -39,8 +39,7 @@ void ApplyNuisanceTwist(int clamp, double angle, RodSpec *spec);
 /// Every fittable model for `nominal`; "none" comes first. `reaction_moment[k]`
 /// is the nominal moment magnitude at support k [N m] (scales the compliance
 /// starts).
-std::vector<EffectModel>
-BuildEffectModels(const RodSpec &nominal,
-                  const std::vector<double> &reaction_moment);
+std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
+                                           const std::vector<double> &reaction_moment);
 
-} // namespace cablefit
+}  // namespace cablefit

@@ -22,10 +22,10 @@ namespace {
 
 struct Layout {
   const char *name;
-  double span; // clamp distance / length
-  double drop; // vertical offset of the far clamp / length
-  double yaw;  // far clamp's lateral offset angle
-  Vec3 t0, t1; // clamp tangents
+  double span;  // clamp distance / length
+  double drop;  // vertical offset of the far clamp / length
+  double yaw;   // far clamp's lateral offset angle
+  Vec3 t0, t1;  // clamp tangents
 };
 
 RodSpec MakeNominal(const Layout &lay, std::mt19937 &rng) {
@@ -38,16 +38,15 @@ RodSpec MakeNominal(const Layout &lay, std::mt19937 &rng) {
   // Gravity number w L^3 / EI between ~5 and ~30: visibly sagging, not a
   // string.
   const double gn = 5 + 25 * u(rng);
-  s.material.linear_density =
-      gn * s.material.bending_stiffness / (9.81 * std::pow(s.length, 3));
+  s.material.linear_density = gn * s.material.bending_stiffness / (9.81 * std::pow(s.length, 3));
   SupportSpec a, b;
   a.position = Vec3(0, 0, 0.5);
   a.tangent = lay.t0;
   a.normal = lay.t0.unitOrthogonal();
   b.s = s.length;
   const double d = lay.span * s.length;
-  b.position = a.position + Vec3(d * std::cos(lay.yaw), d * std::sin(lay.yaw),
-                                 -lay.drop * s.length);
+  b.position =
+      a.position + Vec3(d * std::cos(lay.yaw), d * std::sin(lay.yaw), -lay.drop * s.length);
   b.tangent = lay.t1;
   b.normal = lay.t1.unitOrthogonal();
   s.supports = {a, b};
@@ -73,8 +72,8 @@ struct Hidden {
   RodSpec truth;
 };
 
-Hidden HideEffect(const std::string &effect, const RodSpec &nominal,
-                  bool subtle, std::mt19937 &rng) {
+Hidden HideEffect(const std::string &effect, const RodSpec &nominal, bool subtle,
+                  std::mt19937 &rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double f = subtle ? 0.5 : 1.0;
   Hidden h{effect, nominal};
@@ -83,8 +82,8 @@ Hidden HideEffect(const std::string &effect, const RodSpec &nominal,
   if (effect == "intrinsic_curvature") {
     const double w = (0.08 + 0.2 * u(rng)) * L, c = (0.25 + 0.5 * u(rng)) * L;
     const double a = 2 * M_PI * u(rng), k = f * (2.0 + 2.0 * u(rng));
-    t.natural_curvature.push_back({c - w / 2, c + w / 2, 0.2 * w,
-                                   Vec3(k * std::cos(a), k * std::sin(a), 0)});
+    t.natural_curvature.push_back(
+        {c - w / 2, c + w / 2, 0.2 * w, Vec3(k * std::cos(a), k * std::sin(a), 0)});
   } else if (effect == "clamp_orientation") {
     SupportSpec &sp = t.supports[u(rng) < 0.5 ? 0 : 1];
     const Frame fr = Frame::FromTangentNormal(sp.tangent, sp.normal);
@@ -94,8 +93,8 @@ Hidden HideEffect(const std::string &effect, const RodSpec &nominal,
     sp.tangent = rot * fr.d3;
     sp.normal = rot * fr.d1;
   } else if (effect == "weight_stiffness_ratio") {
-    const double r = u(rng) < 0.5 ? 1.0 + f * (0.3 + 0.6 * u(rng))
-                                  : 1.0 / (1.0 + f * (0.3 + 0.6 * u(rng)));
+    const double r =
+        u(rng) < 0.5 ? 1.0 + f * (0.3 + 0.6 * u(rng)) : 1.0 / (1.0 + f * (0.3 + 0.6 * u(rng)));
     t.material.linear_density *= r;
   } else if (effect == "anisotropic_bending") {
     t.material.bending_ratio = 1.0 + f * (0.5 + 0.8 * u(rng));
@@ -103,9 +102,8 @@ Hidden HideEffect(const std::string &effect, const RodSpec &nominal,
   } else if (effect == "support_contact") {
     const double w = nominal.material.linear_density * 9.81 * L;
     const double a = 2 * M_PI * u(rng);
-    t.point_loads.push_back(
-        {(0.3 + 0.4 * u(rng)) * L,
-         f * (0.03 + 0.05 * u(rng)) * w * Vec3(std::cos(a), std::sin(a), 0.5)});
+    t.point_loads.push_back({(0.3 + 0.4 * u(rng)) * L,
+                             f * (0.03 + 0.05 * u(rng)) * w * Vec3(std::cos(a), std::sin(a), 0.5)});
   } else if (effect == "clamp_compliance") {
     const int k = u(rng) < 0.5 ? 0 : 1;
     RodSimulator sim;
@@ -159,19 +157,18 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
         // The hidden truth itself could not be solved from the default shape:
         // not a diagnosis result, but reported so a regression in the solver
         // shows.
-        std::printf("%-7s %-24s truth solve failed: %s\n", layouts[li].name,
-                    effects[ei].c_str(),
+        std::printf("%-7s %-24s truth solve failed: %s\n", layouts[li].name, effects[ei].c_str(),
                     truth.solution.summary.BriefReport().c_str());
         ++failed;
         continue;
       }
-      const Polyline curve = SampleCenterline(
-          truth.solution.centerline, UniformArcLengths(nominal.length, 4000));
+      const Polyline curve =
+          SampleCenterline(truth.solution.centerline, UniformArcLengths(nominal.length, 4000));
       testing::SyntheticScanSpec ss;
       ss.diameter = nominal.material.diameter;
       ss.coverage_deg = 140 + 120 * (rng() % 1000) / 1000.0;
       ss.noise_sigma = 0.05e-3 + 0.1e-3 * (rng() % 1000) / 1000.0;
-      ss.points = (li % 2) ? 8000 : 15000; // sparse and dense scans
+      ss.points = (li % 2) ? 8000 : 15000;  // sparse and dense scans
       const double g0 = (0.2 + 0.5 * (rng() % 1000) / 1000.0) * nominal.length;
       ss.gaps = {Eigen::Vector2d(g0, g0 + 0.04)};
       ss.seed = static_cast<unsigned>(rng());
@@ -180,53 +177,48 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
       so.diameter = nominal.material.diameter;
       std::string got;
       try {
-        const ScanCenterline sc = ExtractScanCenterline(
-            scan.cloud, so, ScanGuide::FromRodSpec(nominal));
+        const ScanCenterline sc =
+            ExtractScanCenterline(scan.cloud, so, ScanGuide::FromRodSpec(nominal));
         ShapeObservation obs;
         obs.points = sc.points;
         obs.s = sc.s;
         obs.noise_sigma = std::max(1e-5, sc.noise_sigma / 10.0);
         const ShapeDiagnosis dg = DiagnoseShape(nominal, obs);
         got = dg.effect;
-        std::printf("%-7s %-24s %-7s -> %-24s conf %.2f  base %.2f mm fit %.3f "
-                    "mm  %.1f s\n",
-                    layouts[li].name, effects[ei].c_str(),
-                    subtle ? "subtle" : "", got.c_str(), dg.confidence,
-                    dg.baseline_max * 1e3, dg.fitted_max * 1e3, dg.seconds);
+        std::printf(
+            "%-7s %-24s %-7s -> %-24s conf %.2f  base %.2f mm fit %.3f "
+            "mm  %.1f s\n",
+            layouts[li].name, effects[ei].c_str(), subtle ? "subtle" : "", got.c_str(),
+            dg.confidence, dg.baseline_max * 1e3, dg.fitted_max * 1e3, dg.seconds);
       } catch (const std::exception &e) {
         got = "error";
-        std::printf("%-7s %-24s -> error: %s\n", layouts[li].name,
-                    effects[ei].c_str(), e.what());
+        std::printf("%-7s %-24s -> error: %s\n", layouts[li].name, effects[ei].c_str(), e.what());
       }
       ++confusion[effects[ei]][got];
       ++total;
-      if (got == effects[ei])
-        ++correct;
-      if (effects[ei] == "none" && got != "none")
-        ++none_false_positive;
+      if (got == effects[ei]) ++correct;
+      if (effects[ei] == "none" && got != "none") ++none_false_positive;
     }
   }
   std::printf("\nconfusion matrix (rows: hidden effect, columns: diagnosed)\n");
   std::vector<std::string> cols = effects;
   cols.push_back("error");
   std::printf("%-24s", "");
-  for (const auto &c : cols)
-    std::printf(" %5.5s", c.c_str());
+  for (const auto &c : cols) std::printf(" %5.5s", c.c_str());
   std::printf("\n");
   for (const auto &r : effects) {
     std::printf("%-24s", r.c_str());
-    for (const auto &c : cols)
-      std::printf(" %5d", confusion[r][c]);
+    for (const auto &c : cols) std::printf(" %5d", confusion[r][c]);
     std::printf("\n");
   }
-  std::printf("identified %d of %d (%.0f %%), none false positives %d, truth "
-              "solves failed %d\n",
-              correct, total, 100.0 * correct / std::max(1, total),
-              none_false_positive, failed);
+  std::printf(
+      "identified %d of %d (%.0f %%), none false positives %d, truth "
+      "solves failed %d\n",
+      correct, total, 100.0 * correct / std::max(1, total), none_false_positive, failed);
   EXPECT_EQ(none_false_positive, 0);
   EXPECT_LE(failed, 2);
   EXPECT_GE(correct, 0.85 * total);
 }
 
-} // namespace
-} // namespace cablefit
+}  // namespace
+}  // namespace cablefit
