@@ -22,7 +22,7 @@ struct PivotFactor {
 };
 
 template <int N>
-PivotFactor FactorPivot(const Eigen::Matrix<double, N, N> &p) {
+PivotFactor FactorPivot(const Eigen::Matrix<double, N, N>& p) {
   using Mat = Eigen::Matrix<double, N, N>;
   PivotFactor f;
   f.largest = p.cwiseAbs().maxCoeff();
@@ -49,7 +49,7 @@ PivotFactor FactorPivot(const Eigen::Matrix<double, N, N> &p) {
   return f;
 }
 
-PivotFactor FactorLeading(const Eigen::Matrix3d &p, int size) {
+PivotFactor FactorLeading(const Eigen::Matrix3d& p, int size) {
   if (size == 3) return FactorPivot<3>(p);
   if (size == 2) return FactorPivot<2>(p.topLeftCorner<2, 2>().eval());
   PivotFactor f;
@@ -61,7 +61,7 @@ PivotFactor FactorLeading(const Eigen::Matrix3d &p, int size) {
 
 }  // namespace
 
-bool KktLdlt::SamePattern(const SparseJacobian &jacobian) const {
+bool KktLdlt::SamePattern(const SparseJacobian& jacobian) const {
   if (static_cast<int>(jac_outer_.size()) != jacobian.outerSize() + 1) return false;
   int t = 0;
   for (int r = 0; r < jacobian.outerSize(); ++r) {
@@ -72,14 +72,14 @@ bool KktLdlt::SamePattern(const SparseJacobian &jacobian) const {
   return jac_outer_.back() == t;
 }
 
-void KktLdlt::Analyze(const RodModel &model, const BlockTree &h, const SparseJacobian &jacobian) {
+void KktLdlt::Analyze(const RodModel& model, const BlockTree& h, const SparseJacobian& jacobian) {
   const int ni = h.size();
   num_items_ = ni;
   num_rows_ = static_cast<int>(jacobian.rows());
   row_first_.clear();
   row_count_.clear();
   block_of_row_.assign(num_rows_, -1);
-  for (const RodSupport &sp : model.supports) {
+  for (const RodSupport& sp : model.supports) {
     if (sp.constraint_row < 0 || sp.constraint_rows == 0) continue;
     const int b = ni + static_cast<int>(row_first_.size());
     row_first_.push_back(sp.constraint_row);
@@ -112,7 +112,7 @@ void KktLdlt::Analyze(const RodModel &model, const BlockTree &h, const SparseJac
   std::vector<std::vector<int>> rows_after(ni);
   order_.clear();
   for (int b = 0; b < nr; ++b) {
-    std::vector<int> &items = row_items[b];
+    std::vector<int>& items = row_items[b];
     std::sort(items.begin(), items.end());
     items.erase(std::unique(items.begin(), items.end()), items.end());
     if (items.empty()) {
@@ -145,7 +145,7 @@ void KktLdlt::Analyze(const RodModel &model, const BlockTree &h, const SparseJac
   entry_block_.clear();
   std::vector<int> sorted_blocks;
   for (int v : order_) {
-    std::vector<int> &c = column[v];
+    std::vector<int>& c = column[v];
     std::sort(c.begin(), c.end(), by_position);
     c.erase(std::unique(c.begin(), c.end()), c.end());
     column_begin[v] = static_cast<int>(entry_block_.size());
@@ -188,8 +188,8 @@ void KktLdlt::Analyze(const RodModel &model, const BlockTree &h, const SparseJac
   pivot_.assign(nb, Eigen::Matrix3d::Zero());
 }
 
-KktLdlt::Status KktLdlt::Factorize(const RodModel &model, const BlockTree &h,
-                                   const SparseJacobian &jacobian, const std::vector<char> &free,
+KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const BlockTree& h,
+                                   const SparseJacobian& jacobian, const std::vector<char>& free,
                                    double shift) {
   if (num_items_ != h.size() || num_rows_ != jacobian.rows() || !SamePattern(jacobian))
     Analyze(model, h, jacobian);
@@ -209,7 +209,7 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel &model, const BlockTree &h,
                                 0.0);  // |J_k|^2 / |H|: its pivot's size
   for (int b = ni; b < nb; ++b)
     pivot_[b].topLeftCorner(row_count_[b - ni], row_count_[b - ni]).setZero();
-  for (Eigen::Matrix3d &e : entry_) e.setZero();
+  for (Eigen::Matrix3d& e : entry_) e.setZero();
   for (int i = 0; i < ni; ++i)
     if (h_entry_[i] >= 0) entry_[h_entry_[i]] = h.Coupling(i).transpose();
   int t = 0;
@@ -234,7 +234,7 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel &model, const BlockTree &h,
     if (!(f.smallest > tol) || !f.inverse.allFinite())
       return is_row ? Status::kRankDeficient : Status::kSingularPivot;
     negative_ += f.negative;
-    const Eigen::Matrix3d &inv = f.inverse;
+    const Eigen::Matrix3d& inv = f.inverse;
     // L_uv = A_uv P^-1; then every pair (a, b) of the column: A_ba -= L_bv
     // A_av^T.
     const int first = column_start_[k];
@@ -245,7 +245,7 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel &model, const BlockTree &h,
     for (int i = 0; i < count; ++i) {
       for (int j = i; j < count; ++j, ++u) {
         const int target = update_target_[u];
-        Eigen::Matrix3d &dst = target < 0 ? pivot_[-1 - target] : entry_[target];
+        Eigen::Matrix3d& dst = target < 0 ? pivot_[-1 - target] : entry_[target];
         dst.noalias() -= l[j] * entry_[first + i].transpose();
       }
     }
@@ -255,8 +255,8 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel &model, const BlockTree &h,
   return Status::kOk;
 }
 
-void KktLdlt::Solve(const Eigen::VectorXd &g, const Eigen::VectorXd &c, Eigen::VectorXd *step,
-                    Eigen::VectorXd *lambda) const {
+void KktLdlt::Solve(const Eigen::VectorXd& g, const Eigen::VectorXd& c, Eigen::VectorXd* step,
+                    Eigen::VectorXd* lambda) const {
   const int ni = num_items_;
   const int nb = static_cast<int>(order_.size());
   std::vector<Eigen::Vector3d> z(nb, Eigen::Vector3d::Zero());
@@ -270,7 +270,7 @@ void KktLdlt::Solve(const Eigen::VectorXd &g, const Eigen::VectorXd &c, Eigen::V
   }
   for (int v = 0; v < nb; ++v) z[v] = (pivot_[v] * z[v]).eval();  // D^-1
   for (int k = nb - 1; k >= 0; --k) {                             // L^T x = y
-    Eigen::Vector3d &zv = z[order_[k]];
+    Eigen::Vector3d& zv = z[order_[k]];
     for (int e = column_start_[k]; e < column_start_[k + 1]; ++e)
       zv.noalias() -= entry_[e].transpose() * z[entry_block_[e]];
   }

@@ -41,7 +41,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 struct FitContext {
-  const ShapeObservation *obs = nullptr;
+  const ShapeObservation* obs = nullptr;
   Eigen::Matrix3Xd points;  // thinned
   Eigen::VectorXd s;        // thinned arc lengths
   double length = 0.0;
@@ -59,31 +59,31 @@ double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
 // Signed distance of the nuisance rotation from the nearer nominal twist, in
 // prior sigmas.
-double TwistPriorDeviation(const FitContext &ctx, double rotation) {
+double TwistPriorDeviation(const FitContext& ctx, double rotation) {
   const double a = WrapAngle(rotation), b = WrapAngle(rotation - ctx.twist_free);
   return (std::abs(a) <= std::abs(b) ? a : b) / ctx.twist_sigma;
 }
 
 // Rotation about the clamp's tangent from its normal to the frame the solution
 // holds there.
-double RotationAtClamp(const SupportSpec &clamp, const RodSolution &sol) {
+double RotationAtClamp(const SupportSpec& clamp, const RodSolution& sol) {
   const Vec3 t = clamp.tangent.normalized();
   int k = 0;
   for (int i = 1; i < sol.frame_s.size(); ++i)
     if (std::abs(sol.frame_s[i] - clamp.s) < std::abs(sol.frame_s[k] - clamp.s)) k = i;
-  const Frame &f = sol.frames[static_cast<size_t>(k)];
+  const Frame& f = sol.frames[static_cast<size_t>(k)];
   // The element's d1 carried onto the clamp's tangent by the smallest rotation.
   const Vec3 d1 = Eigen::Quaterniond::FromTwoVectors(f.d3, t) * f.d1;
   const Vec3 n = (clamp.normal - clamp.normal.dot(t) * t).normalized();
   return std::atan2(n.cross(d1).dot(t), n.dot(d1));
 }
 
-bool Residual(const FitContext &ctx, RodSimulator *sim, const RodSpec &spec, Eigen::VectorXd *r,
-              CurveProjection *proj = nullptr) {
+bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eigen::VectorXd* r,
+              CurveProjection* proj = nullptr) {
   SimulationResult res;
   try {
     res = sim->Resimulate(spec);
-  } catch (const InvalidInput &) {
+  } catch (const InvalidInput&) {
     return false;
   }
   if (!res.converged) return false;
@@ -96,15 +96,15 @@ bool Residual(const FitContext &ctx, RodSimulator *sim, const RodSpec &spec, Eig
 }
 
 struct Fit {
-  const EffectModel *model = nullptr;
+  const EffectModel* model = nullptr;
   Eigen::VectorXd x;
   double cost = INFINITY;  // 1/2 |offsets|^2 [m^2]
   double prior = 0.0;      // squared prior deviation of the nuisance twist [-]
   bool ok = false;
 };
 
-Fit FitModel(const FitContext &ctx, const RodSimulator &base, const EffectModel &m,
-             const Eigen::VectorXd &nuisance, int max_iterations) {
+Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel& m,
+             const Eigen::VectorXd& nuisance, int max_iterations) {
   const int np = m.physical_parameters;
   const int nn = static_cast<int>(m.scale.size()) - np;
   const bool prior = m.has_nuisance && nn > 0 && ctx.twist_prior;
@@ -112,8 +112,8 @@ Fit FitModel(const FitContext &ctx, const RodSimulator &base, const EffectModel 
     RodSimulator sim;
     LmResult lm;
   };
-  auto run = [&](Run *r, const Eigen::VectorXd &x0, int iterations) {
-    auto fn = [&](const Eigen::VectorXd &x, Eigen::VectorXd *res) {
+  auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
+    auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
       if (!Residual(ctx, &r->sim, m.apply(x), res)) return false;
       if (prior) {
         res->conservativeResize(res->size() + 1);
@@ -130,7 +130,7 @@ Fit FitModel(const FitContext &ctx, const RodSimulator &base, const EffectModel 
   // convergence.
   const bool screen = m.starts.size() > 2;
   std::vector<Run> runs;
-  for (const Eigen::VectorXd &start : m.starts) {
+  for (const Eigen::VectorXd& start : m.starts) {
     Eigen::VectorXd x0(np + nn);
     x0.head(np) = start;
     if (nn) x0.tail(nn) = nuisance;
@@ -139,12 +139,12 @@ Fit FitModel(const FitContext &ctx, const RodSimulator &base, const EffectModel 
     if (r.lm.ok) runs.push_back(std::move(r));
   }
   std::sort(runs.begin(), runs.end(),
-            [](const Run &a, const Run &b) { return a.lm.cost < b.lm.cost; });
+            [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
   if (screen) {
     if (runs.size() > 2) runs.resize(2);
-    for (Run &r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
+    for (Run& r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
     std::sort(runs.begin(), runs.end(),
-              [](const Run &a, const Run &b) { return a.lm.cost < b.lm.cost; });
+              [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
   }
   Fit best;
   best.model = &m;
@@ -158,7 +158,7 @@ Fit FitModel(const FitContext &ctx, const RodSimulator &base, const EffectModel 
 }
 
 // The span where the deviation exceeds half its maximum (seen points only).
-std::pair<double, double> MismatchInterval(const Eigen::VectorXd &s, const Eigen::VectorXd &dev) {
+std::pair<double, double> MismatchInterval(const Eigen::VectorXd& s, const Eigen::VectorXd& dev) {
   if (s.size() == 0) return {0.0, 0.0};
   Eigen::Index imax;
   const double mx = dev.maxCoeff(&imax);
@@ -185,8 +185,8 @@ std::string Fixed(double v, int digits) {
 
 }  // namespace
 
-bool ShapeDiagnosisOptions::IsValid(std::string *why) const {
-  auto fail = [why](const char *m) {
+bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
+  auto fail = [why](const char* m) {
     if (why) *why = m;
     return false;
   };
@@ -197,8 +197,8 @@ bool ShapeDiagnosisOptions::IsValid(std::string *why) const {
   return true;
 }
 
-ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs,
-                             const ShapeDiagnosisOptions &options) {
+ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs,
+                             const ShapeDiagnosisOptions& options) {
   const auto t0 = Clock::now();
   std::string why;
   if (!options.IsValid(&why)) throw InvalidInput("diagnosis options: " + why);
@@ -207,7 +207,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
   if (n_all < 5) throw InvalidInput("the recording has only " + std::to_string(n_all) + " points");
   if (!obs.points.allFinite()) throw InvalidInput("the recording has non-finite points");
   const double L = nominal.length;
-  auto progress = [&](double f, const char *stage) {
+  auto progress = [&](double f, const char* stage) {
     if (options.progress && !options.progress(f, stage)) throw InvalidInput("cancelled");
   };
 
@@ -248,7 +248,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
         pts.emplace_back(s_obs[i], obs.points.col(i));
     if (nominal.supports.back().s >= L * (1 - 1e-9))
       pts.emplace_back(L, nominal.supports.back().position);
-    std::sort(pts.begin(), pts.end(), [](auto &a, auto &b) { return a.first < b.first; });
+    std::sort(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.first < b.first; });
     initial.points.resize(3, static_cast<int>(pts.size()));
     initial.s.resize(static_cast<int>(pts.size()));
     for (size_t i = 0; i < pts.size(); ++i) {
@@ -309,7 +309,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
   progress(0.1, "twist");
 
   std::vector<double> moments;
-  for (const auto &re : nominal_fit_solution.solution.reactions)
+  for (const auto& re : nominal_fit_solution.solution.reactions)
     moments.push_back(re.moment.norm());
   std::vector<EffectModel> models = BuildEffectModels(nominal, moments);
   std::vector<Fit> fits;
@@ -331,7 +331,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
   // Selection: BIC with the noise of the best model (floored by the recording's
   // noise).
   double best_cost = INFINITY;
-  for (const Fit &f : fits)
+  for (const Fit& f : fits)
     if (f.ok) best_cost = std::min(best_cost, f.cost);
   if (!std::isfinite(best_cost)) throw InvalidInput("no model could be fitted to the recording");
   const int dof = 2 * n;  // a point's offset from the curve has two free components
@@ -350,7 +350,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
     auto it = best_of.find(models[i].effect);
     if (it == best_of.end() || bic(i) < bic(it->second)) best_of[models[i].effect] = i;
   }
-  for (auto &[name, i] : best_of) order.emplace_back(bic(i), i);
+  for (auto& [name, i] : best_of) order.emplace_back(bic(i), i);
   std::sort(order.begin(), order.end());
   const size_t none_index = best_of.at("none");
   const double none_bic = bic(none_index);
@@ -358,8 +358,8 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
   if (order.front().second != none_index && order.front().first < none_bic - options.min_bic_gain)
     chosen = order.front().second;
   double wsum = 0.0;
-  for (auto &[bic, i] : order) wsum += std::exp(-0.5 * (bic - order.front().first));
-  for (auto &[bic, i] : order) {
+  for (auto& [bic, i] : order) wsum += std::exp(-0.5 * (bic - order.front().first));
+  for (auto& [bic, i] : order) {
     EffectCandidate c;
     c.effect = models[i].effect;
     c.bic = bic;
@@ -372,10 +372,10 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
   }
   // Final solves at full accuracy: nominal (with the fitted twist) and the
   // chosen model.
-  const EffectModel &cm = models[chosen];
-  const Eigen::VectorXd &cx = fits[chosen].x;
+  const EffectModel& cm = models[chosen];
+  const Eigen::VectorXd& cx = fits[chosen].x;
   RodSpec nominal_twisted = nominal;
-  const Eigen::VectorXd &none_x = fits[none_index].x;
+  const Eigen::VectorXd& none_x = fits[none_index].x;
   // The nominal shown against the recording holds the twist the nominal fit
   // found, so that the deviation is the effect's; a twist preload is measured
   // from the torque-free hold.
@@ -404,7 +404,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
 
   // Result in the spec's terms.
   out.effect = cm.effect;
-  for (const auto &c : out.candidates)
+  for (const auto& c : out.candidates)
     if (c.effect == out.effect) out.confidence = c.score;
   if (chosen == none_index) {
     // Confidence that nothing is missing: the weight of `none` against the best
@@ -487,7 +487,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec &nominal, const ShapeObservation &obs
        << Fixed(force[2] / std::max(force.norm(), 1e-30), 2) << ")" << improve;
   } else if (cm.effect == "twist_preload") {
     out.interval = mismatch;
-    const SupportSpec &clamp = nominal.supports[static_cast<size_t>(*cm.clamp)];
+    const SupportSpec& clamp = nominal.supports[static_cast<size_t>(*cm.clamp)];
     const double from_case = WrapAngle(cx[0]);
     // The twist the clamp imposes against the torque-free hold when that is
     // known (the case's normal is the less reliable reference, see the method

@@ -7,31 +7,31 @@
 namespace cablefit {
 namespace {
 
-Frame FrameOf(const SupportSpec &s) {
+Frame FrameOf(const SupportSpec& s) {
   return Frame::FromTangentNormal(
       s.tangent, s.kind == SupportKind::kClamp ? s.normal : s.tangent.unitOrthogonal());
 }
 
 }  // namespace
 
-int NuisanceClampIndex(const RodSpec &nominal) {
+int NuisanceClampIndex(const RodSpec& nominal) {
   for (int k = static_cast<int>(nominal.supports.size()) - 1; k > 0; --k)
     if (nominal.supports[k].kind == SupportKind::kClamp) return k;
   return -1;
 }
 
-void ApplyNuisanceTwist(int clamp, double angle, RodSpec *spec) {
+void ApplyNuisanceTwist(int clamp, double angle, RodSpec* spec) {
   if (clamp < 0) return;
-  SupportSpec &sp = spec->supports[clamp];
+  SupportSpec& sp = spec->supports[clamp];
   sp.normal = Eigen::AngleAxisd(angle, sp.tangent.normalized()) * sp.normal;
 }
 
-std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
-                                           const std::vector<double> &reaction_moment) {
+std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
+                                           const std::vector<double>& reaction_moment) {
   const double L = nominal.length;
   const int nuis = NuisanceClampIndex(nominal);
   const int nn = nuis >= 0 ? 1 : 0;
-  auto with_nuisance = [nominal, nuis](const Eigen::VectorXd &x, int k) {
+  auto with_nuisance = [nominal, nuis](const Eigen::VectorXd& x, int k) {
     RodSpec s = nominal;
     if (nuis >= 0) ApplyNuisanceTwist(nuis, x[k], &s);
     return s;
@@ -50,7 +50,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
     m.effect = "none";
     m.scale = scales({});
     m.starts = {Eigen::VectorXd(0)};
-    m.apply = [=](const Eigen::VectorXd &x) { return with_nuisance(x, 0); };
+    m.apply = [=](const Eigen::VectorXd& x) { return with_nuisance(x, 0); };
     models.push_back(m);
   }
   {  // Natural curvature over [c - w/2, c + w/2], material-frame components.
@@ -65,7 +65,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
         x << L * (i + 0.5) / 6, w, 0.0, 0.0;
         m.starts.push_back(x);
       }
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = with_nuisance(x, 4);
       const double w = std::clamp(std::abs(x[1]), 0.01 * L, L);
       NaturalCurvatureSpec nc;
@@ -88,9 +88,9 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
     m.names = {"rot_d1", "rot_d2"};
     m.scale = scales({0.02, 0.02});
     m.starts = {Eigen::VectorXd::Zero(2)};
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = with_nuisance(x, 2);
-      SupportSpec &sp = s.supports[k];
+      SupportSpec& sp = s.supports[k];
       const Frame f = FrameOf(sp);
       const Vec3 rv = x[0] * f.d1 + x[1] * f.d2;
       const double a = rv.norm();
@@ -110,7 +110,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
     m.names = {"log_ratio"};
     m.scale = scales({0.05});
     m.starts = {Eigen::VectorXd::Zero(1)};
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = with_nuisance(x, 1);
       s.material.linear_density *= std::exp(x[0]);
       return s;
@@ -124,12 +124,12 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
     m.physical_parameters = 2;
     m.names = {"u1", "u2"};
     m.scale = scales({0.05, 0.05});
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 8; ++i) {
       Eigen::VectorXd x(2);
-      x << 0.2 * std::cos(i * M_PI / 2), 0.2 * std::sin(i * M_PI / 2);
+      x << 0.25 * std::cos(i * M_PI / 4), 0.25 * std::sin(i * M_PI / 4);
       m.starts.push_back(x);
     }
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = with_nuisance(x, 2);
       const double u = std::hypot(x[0], x[1]);
       s.material.bending_ratio = std::exp(2.0 * u);
@@ -150,7 +150,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
       x[0] = L * (i + 0.5) / 8;
       m.starts.push_back(x);
     }
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = with_nuisance(x, 4);
       s.point_loads.push_back({std::clamp(x[0], 0.02 * L, 0.98 * L), Vec3(x[1], x[2], x[3])});
       return s;
@@ -166,7 +166,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
     m.names = {"rotation"};
     m.scale = Eigen::VectorXd::Constant(1, 0.05);
     m.starts = {Eigen::VectorXd::Zero(1)};  // DiagnoseShape starts it from the fitted nuisance
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = nominal;
       ApplyNuisanceTwist(nuis, x[0], &s);
       return s;
@@ -184,7 +184,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
     const double moment = k < static_cast<int>(reaction_moment.size()) ? reaction_moment[k] : 0.0;
     const double c0 = 0.02 / std::max(moment, 1e-9);
     for (double f : {0.3, 3.0}) m.starts.push_back(Eigen::VectorXd::Constant(1, std::log(f * c0)));
-    m.apply = [=](const Eigen::VectorXd &x) {
+    m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = with_nuisance(x, 1);
       s.supports[k].compliance = Mat3::Identity() * std::exp(std::clamp(x[0], -60.0, 20.0));
       return s;

@@ -26,20 +26,20 @@ struct EffectModel {
   /// Carries the nuisance twist as its last parameter (all but twist_preload).
   bool has_nuisance = true;
   /// Parameters (physical..., nuisance twist) -> the changed spec.
-  std::function<RodSpec(const Eigen::VectorXd &)> apply;
+  std::function<RodSpec(const Eigen::VectorXd&)> apply;
 };
 
 /// Index of the support whose twist is the nuisance parameter (last clamp), or
 /// -1.
-int NuisanceClampIndex(const RodSpec &nominal);
+int NuisanceClampIndex(const RodSpec& nominal);
 
 /// Applies the nuisance rotation (radians about the clamp tangent) to `spec`.
-void ApplyNuisanceTwist(int clamp, double angle, RodSpec *spec);
+void ApplyNuisanceTwist(int clamp, double angle, RodSpec* spec);
 
 /// Every fittable model for `nominal`; "none" comes first. `reaction_moment[k]`
 /// is the nominal moment magnitude at support k [N m] (scales the compliance
 /// starts).
-std::vector<EffectModel> BuildEffectModels(const RodSpec &nominal,
-                                           const std::vector<double> &reaction_moment);
+std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
+                                           const std::vector<double>& reaction_moment);
 
 }  // namespace cablefit

@@ -9,9 +9,9 @@
 #include <sstream>
 
 #include "block_tree.h"
-#include "kkt_ldlt.h"
 #include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
+#include "kkt_ldlt.h"
 #include "quaternion.h"
 #include "rod_energy.h"
 #include "support_targets.h"
@@ -59,7 +59,8 @@ void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
   if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
 }
 
-double Merit(const RodModel& model, const RodState& state, double nu, const std::vector<char>& free) {
+double Merit(const RodModel& model, const RodState& state, double nu,
+             const std::vector<char>& free) {
   Evaluation ev;
   Evaluate(model, state, false, nullptr, free, &ev, /*with_jacobian=*/false);
   return ev.energy + nu * ev.c.lpNorm<1>();
@@ -100,8 +101,8 @@ void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha,
 struct KktSolve {
   bool ok = false;
   int negative_directions = 0;  // of the reduced Hessian (unstable directions on the manifold)
-  Eigen::VectorXd step;    // 3n
-  Eigen::VectorXd lambda;  // m
+  Eigen::VectorXd step;         // 3n
+  Eigen::VectorXd lambda;       // m
 };
 
 // The same system through the Schur complement S = C H^-1 C^T (O(n m) + O(m^3)): its inertia
@@ -233,20 +234,24 @@ bool StaticsOptions::IsValid(std::string* why) const {
 
 const char* ToString(TerminationType t) {
   switch (t) {
-    case TerminationType::kConverged: return "converged";
-    case TerminationType::kNoConvergence: return "no_convergence";
-    case TerminationType::kLineSearchFailure: return "line_search_failure";
-    case TerminationType::kCancelled: return "cancelled";
+    case TerminationType::kConverged:
+      return "converged";
+    case TerminationType::kNoConvergence:
+      return "no_convergence";
+    case TerminationType::kLineSearchFailure:
+      return "line_search_failure";
+    case TerminationType::kCancelled:
+      return "cancelled";
   }
   return "?";
 }
 
 std::string StaticsSummary::BriefReport() const {
   std::ostringstream os;
-  os << ToString(termination) << ": " << iterations << " Newton iterations, "
-     << continuation_steps << " continuation steps, |grad| " << gradient_norm << " N m, |c| "
-     << constraint_norm << " m, energy " << final_energy << " J, "
-     << (stable ? "stable" : "UNSTABLE") << ", " << seconds * 1e3 << " ms";
+  os << ToString(termination) << ": " << iterations << " Newton iterations, " << continuation_steps
+     << " continuation steps, |grad| " << gradient_norm << " N m, |c| " << constraint_norm
+     << " m, energy " << final_energy << " J, " << (stable ? "stable" : "UNSTABLE") << ", "
+     << seconds * 1e3 << " ms";
   if (!message.empty()) os << " (" << message << ")";
   return os.str();
 }
@@ -273,8 +278,9 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
       first = false;
     }
     const Eigen::VectorXd grad_l =
-        model.num_constraints > 0 ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * state->lambda)
-                                  : ev.gradient;
+        model.num_constraints > 0
+            ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * state->lambda)
+            : ev.gradient;
     sum.gradient_norm = grad_l.lpNorm<Eigen::Infinity>();
     sum.constraint_norm = ev.c.size() ? ev.c.lpNorm<Eigen::Infinity>() : 0.0;
     sum.final_energy = ev.energy;
@@ -342,11 +348,13 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
         // full step that reduces the KKT residual markedly.
         Evaluation trial;
         Evaluate(model, *state, false, nullptr, free, &trial);
-        const Eigen::VectorXd gl = model.num_constraints > 0
-                                       ? Eigen::VectorXd(trial.gradient + trial.jac.transpose() * kkt.lambda)
-                                       : trial.gradient;
-        const double kkt1 = std::max(gl.lpNorm<Eigen::Infinity>() / gtol,
-                                     (trial.c.size() ? trial.c.lpNorm<Eigen::Infinity>() : 0.0) / ctol);
+        const Eigen::VectorXd gl =
+            model.num_constraints > 0
+                ? Eigen::VectorXd(trial.gradient + trial.jac.transpose() * kkt.lambda)
+                : trial.gradient;
+        const double kkt1 =
+            std::max(gl.lpNorm<Eigen::Infinity>() / gtol,
+                     (trial.c.size() ? trial.c.lpNorm<Eigen::Infinity>() : 0.0) / ctol);
         if (kkt1 < 0.5 * kkt0) {
           accepted = true;
           break;
@@ -377,7 +385,8 @@ void EvaluateStability(const RodModel& model, const RodState& state, StaticsSumm
   summary->negative_directions = kkt.ok ? kkt.negative_directions : -1;
 }
 
-StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state, const StaticsOptions& options);
+StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
+                                const StaticsOptions& options);
 
 StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options) {
   const RodState start = *state;
@@ -417,7 +426,8 @@ StaticsSummary SolveStatics(const RodModel& model, RodState* state, const Static
   return sum;
 }
 
-StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state, const StaticsOptions& options) {
+StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
+                                const StaticsOptions& options) {
   const auto t0 = Clock::now();
   std::string why;
   CABLEFIT_CHECK(options.IsValid(&why), why);

@@ -30,7 +30,7 @@ struct System {
   Eigen::MatrixXd dense_h, dense_j;
 };
 
-System MaskedSystem(const RodModel &model, const RodState &state, const Eigen::VectorXd &lambda) {
+System MaskedSystem(const RodModel& model, const RodState& state, const Eigen::VectorXd& lambda) {
   const KktEvaluation e = EvaluateKkt(model, state, lambda, /*dense_hessian=*/true);
   System s;
   const int n = static_cast<int>(model.items.size());
@@ -64,7 +64,7 @@ struct DenseAnswer {
   int negative = 0;
 };
 
-DenseAnswer SolveDense(const System &s, double shift) {
+DenseAnswer SolveDense(const System& s, double shift) {
   const int n3 = static_cast<int>(s.g.size());
   const int m = static_cast<int>(s.c.size());
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n3 + m, n3 + m);
@@ -86,7 +86,7 @@ DenseAnswer SolveDense(const System &s, double shift) {
 
 // Returns the unstable directions of the system (negative eigenvalues beyond
 // the m rows).
-int ExpectSameSolution(const RodModel &model, const System &s, double shift) {
+int ExpectSameSolution(const RodModel& model, const System& s, double shift) {
   KktLdlt kkt;
   EXPECT_EQ(kkt.Factorize(model, s.h, s.jac, s.free, shift), KktLdlt::Status::kOk);
   Eigen::VectorXd step, lambda;
@@ -100,7 +100,7 @@ int ExpectSameSolution(const RodModel &model, const System &s, double shift) {
 
 // The system's own right-hand side (unless it is ~0, at an equilibrium), and a
 // random one.
-int ExpectSameAnswer(const RodModel &model, const System &s, double shift, bool own_rhs = true) {
+int ExpectSameAnswer(const RodModel& model, const System& s, double shift, bool own_rhs = true) {
   const int unstable = own_rhs ? ExpectSameSolution(model, s, shift) : 0;
   System r = s;
   std::mt19937 rng(7);
@@ -117,7 +117,7 @@ RodSpec FiveSupportRod() {
   RodSpec r;
   r.length = 1.0;
   r.material = testing::TestMaterial(0.02, 0.12);
-  auto support = [](SupportKind kind, double s, const Vec3 &p, const Vec3 &t) {
+  auto support = [](SupportKind kind, double s, const Vec3& p, const Vec3& t) {
     SupportSpec sp;
     sp.kind = kind;
     sp.s = s;
@@ -139,8 +139,8 @@ RodSpec FiveSupportRod() {
 
 // Random rotations and multipliers: far from equilibrium, so H is usually
 // indefinite.
-void Perturb(const RodModel &model, double amplitude, unsigned seed, RodState *state,
-             Eigen::VectorXd *lambda) {
+void Perturb(const RodModel& model, double amplitude, unsigned seed, RodState* state,
+             Eigen::VectorXd* lambda) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> nd(0.0, 1.0);
   Eigen::VectorXd theta(3 * model.items.size());
@@ -152,7 +152,7 @@ void Perturb(const RodModel &model, double amplitude, unsigned seed, RodState *s
 
 // Compares both solvers at states perturbed from `state` (one per seed), unshifted and with
 // `shift`; returns how many of them are unstable.
-int CheckPerturbedStates(const RodModel &model, const RodState &state, double amplitude,
+int CheckPerturbedStates(const RodModel& model, const RodState& state, double amplitude,
                          std::initializer_list<unsigned> seeds, double shift) {
   int unstable = 0;
   for (unsigned seed : seeds) {
@@ -210,7 +210,7 @@ TEST(KktLdlt, NetworkWithABreakoutAndClipsMatchesTheDenseSolve) {
     spec.branches.push_back(b);
   }
   const NetworkModel net = CompileNetworkModel(spec, 0.02);
-  const RodModel &model = net.rod;
+  const RodModel& model = net.rod;
   RodState state = DrawnNetworkState(net);
   EXPECT_GT(CheckPerturbedStates(model, state, 0.2, {4u, 5u}, 2.0), 0)
       << "the perturbed states should include indefinite ones";

@@ -21,14 +21,14 @@ namespace cablefit {
 namespace {
 
 struct Layout {
-  const char *name;
+  const char* name;
   double span;  // clamp distance / length
   double drop;  // vertical offset of the far clamp / length
   double yaw;   // far clamp's lateral offset angle
   Vec3 t0, t1;  // clamp tangents
 };
 
-RodSpec MakeNominal(const Layout &lay, std::mt19937 &rng) {
+RodSpec MakeNominal(const Layout& lay, std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   RodSpec s;
   s.length = 0.45 + 0.3 * u(rng);
@@ -58,7 +58,7 @@ RodSpec MakeNominal(const Layout &lay, std::mt19937 &rng) {
   RodSimulator sim;
   const SimulationResult r = sim.Simulate(released);
   if (r.converged) {
-    const Frame &f = r.solution.frames.back();
+    const Frame& f = r.solution.frames.back();
     const Vec3 t = lay.t1.normalized();
     const Vec3 d1 = Eigen::Quaterniond::FromTwoVectors(f.d3, t) * f.d1;
     std::normal_distribution<double> twist(0.0, 0.17);
@@ -72,12 +72,12 @@ struct Hidden {
   RodSpec truth;
 };
 
-Hidden HideEffect(const std::string &effect, const RodSpec &nominal, bool subtle,
-                  std::mt19937 &rng) {
+Hidden HideEffect(const std::string& effect, const RodSpec& nominal, bool subtle,
+                  std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double f = subtle ? 0.5 : 1.0;
   Hidden h{effect, nominal};
-  RodSpec &t = h.truth;
+  RodSpec& t = h.truth;
   const double L = nominal.length;
   if (effect == "intrinsic_curvature") {
     const double w = (0.08 + 0.2 * u(rng)) * L, c = (0.25 + 0.5 * u(rng)) * L;
@@ -85,7 +85,7 @@ Hidden HideEffect(const std::string &effect, const RodSpec &nominal, bool subtle
     t.natural_curvature.push_back(
         {c - w / 2, c + w / 2, 0.2 * w, Vec3(k * std::cos(a), k * std::sin(a), 0)});
   } else if (effect == "clamp_orientation") {
-    SupportSpec &sp = t.supports[u(rng) < 0.5 ? 0 : 1];
+    SupportSpec& sp = t.supports[u(rng) < 0.5 ? 0 : 1];
     const Frame fr = Frame::FromTangentNormal(sp.tangent, sp.normal);
     const double a = 2 * M_PI * u(rng);
     const Eigen::AngleAxisd rot(f * (0.08 + 0.12 * u(rng)),
@@ -115,7 +115,7 @@ Hidden HideEffect(const std::string &effect, const RodSpec &nominal, bool subtle
     // Always beyond the clamp-setting uncertainty (the diagnosis's prior is
     // ~0.25 rad): a smaller preload cannot be told from how carefully a clamp
     // was set, so none is "subtle".
-    SupportSpec &sp = t.supports[u(rng) < 0.5 ? 0 : 1];
+    SupportSpec& sp = t.supports[u(rng) < 0.5 ? 0 : 1];
     const double a = (u(rng) < 0.5 ? -1.0 : 1.0) * (1.0 + 0.6 * u(rng));
     sp.normal = Eigen::AngleAxisd(a, sp.tangent.normalized()) * sp.normal;
   }
@@ -149,7 +149,7 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
       SimulationResult truth;
       try {
         truth = sim.Simulate(h.truth);
-      } catch (const std::exception &e) {
+      } catch (const std::exception& e) {
         ++failed;
         continue;
       }
@@ -190,7 +190,11 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
             "mm  %.1f s\n",
             layouts[li].name, effects[ei].c_str(), subtle ? "subtle" : "", got.c_str(),
             dg.confidence, dg.baseline_max * 1e3, dg.fitted_max * 1e3, dg.seconds);
-      } catch (const std::exception &e) {
+        if (got != effects[ei]) {  // how close the hidden effect came
+          for (const EffectCandidate& c : dg.candidates)
+            std::printf("          candidate %-24s bic %.1f\n", c.effect.c_str(), c.bic);
+        }
+      } catch (const std::exception& e) {
         got = "error";
         std::printf("%-7s %-24s -> error: %s\n", layouts[li].name, effects[ei].c_str(), e.what());
       }
@@ -204,11 +208,11 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
   std::vector<std::string> cols = effects;
   cols.push_back("error");
   std::printf("%-24s", "");
-  for (const auto &c : cols) std::printf(" %5.5s", c.c_str());
+  for (const auto& c : cols) std::printf(" %5.5s", c.c_str());
   std::printf("\n");
-  for (const auto &r : effects) {
+  for (const auto& r : effects) {
     std::printf("%-24s", r.c_str());
-    for (const auto &c : cols) std::printf(" %5d", confusion[r][c]);
+    for (const auto& c : cols) std::printf(" %5d", confusion[r][c]);
     std::printf("\n");
   }
   std::printf(
