@@ -5,8 +5,10 @@
 #   3. tools/sanitize.sh  the whole suite again built with ASan + UBSan + LSan (build-asan),
 #                         within what is left of a HARDENING_BUDGET (default 85 min, CI's limit
 #                         is 90) counted from the start of this script.
-# Stage 3 fails the run only with HARDENING_STRICT=1: it has not yet had a verified clean run on
-# a fresh clone, and a red stage would block every landing. Its result is printed either way.
+# A sanitizer report or failed test in stage 3 fails the run. Running out of the budget does not
+# (the machine's speed is not a defect) unless HARDENING_STRICT=1; it is printed either way. The
+# long corpus tests run a subset of their cases in the sanitizer build (tests/support
+# SanitizerBuild()).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 hardening=false
@@ -45,12 +47,12 @@ set -e
 # ctest's summary and the names of failed tests, so the CI log shows the verdict.
 grep -E "tests passed|tests failed|\*\*\*Failed|Exception|Timeout|Not Run" build-asan/sanitize.log | tail -40 || true
 echo "test.sh: sanitizer build and tests took $((SECONDS - stage_start)) s (full log: build-asan/sanitize.log)"
-if [ $rc -ne 0 ]; then
-  if [ $rc -eq 124 ] || [ $rc -eq 130 ]; then
-    echo "test.sh: SANITIZER STAGE INCOMPLETE: stopped at the time budget (${budget} s)"
-  else
-    echo "test.sh: SANITIZER STAGE FAILED (exit $rc)"
-  fi
+if [ $rc -eq 124 ] || [ $rc -eq 130 ]; then
+  echo "test.sh: SANITIZER STAGE INCOMPLETE: stopped at the time budget (${budget} s)"
   [ "${HARDENING_STRICT:-0}" = "1" ] && exit $rc
+elif [ $rc -ne 0 ]; then
+  echo "test.sh: SANITIZER STAGE FAILED (exit $rc, full log above in build-asan/sanitize.log)"
+  tail -200 build-asan/sanitize.log
+  exit $rc
 fi
 exit 0

@@ -16,6 +16,20 @@ std::filesystem::path SourceDir() {
   return std::filesystem::current_path();
 }
 
+bool SanitizerBuild() {
+#if defined(__SANITIZE_ADDRESS__)
+  return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+  return true;
+#else
+  return false;
+#endif
+#else
+  return false;
+#endif
+}
+
 std::filesystem::path SharedDir() {
   if (const char* env = std::getenv("CABLEFIT_SHARED_DIR")) return env;
   return SourceDir().parent_path() / "shared";

@@ -16,6 +16,7 @@
 #include "cablefit/core/shape_diagnosis.h"
 #include "cablefit/formats/scan_centerline_extractor.h"
 #include "synthetic_tube_scan.h"
+#include "test_support.h"
 
 namespace cablefit {
 namespace {
@@ -172,6 +173,9 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
       const double g0 = (0.2 + 0.5 * (rng() % 1000) / 1000.0) * nominal.length;
       ss.gaps = {Eigen::Vector2d(g0, g0 + 0.04)};
       ss.seed = static_cast<unsigned>(rng());
+      // Under sanitizers one case per effect (a diagonal through the layouts), drawn as above so
+      // that it is the same case as in the full corpus.
+      if (testing::SanitizerBuild() && (li + ei) % 4 != 0) continue;
       const testing::SyntheticScan scan = testing::MakeSyntheticScan(curve, ss);
       ScanCenterlineOptions so;
       so.diameter = nominal.material.diameter;

@@ -42,6 +42,11 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
   for (const auto& e : fs::directory_iterator(root))
     if (fs::exists(e.path() / "scan.ply")) dirs.push_back(e.path());
   std::sort(dirs.begin(), dirs.end());
+  if (testing::SanitizerBuild()) {  // every third case (the long fits take minutes each there)
+    std::vector<fs::path> some;
+    for (size_t i = 0; i < dirs.size(); i += 3) some.push_back(dirs[i]);
+    dirs = some;
+  }
   int correct = 0;
   for (const fs::path& d : dirs) {
     const RecordingCase rc = ReadRecordingCase((d / "case.json").string());
