@@ -55,6 +55,24 @@ BranchSpec Branch(const std::string& name, const Vec3& a, const Vec3& b, double 
 
 }  // namespace
 
+TriangleMesh FlatPanel(const Vec3& lo, const Vec3& hi, int nx, int ny) {
+  TriangleMesh m;
+  m.vertices.resize(3, (nx + 1) * (ny + 1));
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      m.vertices.col(j * (nx + 1) + i) =
+          Vec3(lo.x() + (hi.x() - lo.x()) * i / nx, lo.y() + (hi.y() - lo.y()) * j / ny, lo.z());
+  m.faces.resize(3, 2 * nx * ny);
+  int f = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+      m.faces.col(f++) = Eigen::Vector3i(a, b, d);
+      m.faces.col(f++) = Eigen::Vector3i(a, d, c);
+    }
+  return m;
+}
+
 double NetworkLength(const NetworkSpec& spec) {
   double total = 0.0;
   for (const BranchSpec& b : spec.branches) total += b.length;

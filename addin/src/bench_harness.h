@@ -15,6 +15,10 @@ struct SyntheticHarnessSize {
 /// 30 branches, 14 junctions and about 60 clips with the default size (17.6 m of cable).
 NetworkSpec SyntheticHarness(const SyntheticHarnessSize& size = {});
 
+/// A flat panel at height z under the x-y rectangle [lo, hi], tessellated into nx x ny cells of
+/// two triangles each facing +z (an open sheet, like a body panel exported as a surface).
+TriangleMesh FlatPanel(const Vec3& lo, const Vec3& hi, int nx, int ny);
+
 /// Total drawn length [m].
 double NetworkLength(const NetworkSpec& spec);
 

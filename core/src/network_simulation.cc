@@ -129,14 +129,38 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
     held[h.node] = 1;
     kept.push_back(h);
   }
+  // Penetration depth of every free node.
+  std::vector<double> depth(m.num_nodes(), 0.0);
   for (int n = 0; n < m.num_nodes(); ++n) {
     if (held[n] || info.fixed[n] || info.radius[n] <= 0) continue;
     const double radius = info.radius[n];
     const ObstacleHit hit = field.Nearest(r.col(n), radius);
-    if (hit.obstacle < 0 || radius - hit.distance <= tolerance * 2 * radius) continue;
+    if (hit.obstacle >= 0 && radius - hit.distance > tolerance * 2 * radius) depth[n] = radius - hit.distance;
+  }
+  // A span that fell into a surface is held first where it went deepest. Holding every
+  // penetrating node would pin the whole stretch flat, and the holds would then peel off its
+  // edges one node per round; holding the deepest node of each penetrating stretch along a
+  // branch splits the stretch, so a long contact fills in within log2(length) rounds instead.
+  std::vector<char> take(m.num_nodes(), 0);
+  for (const BranchLayout& lay : net.branches) {
+    for (size_t k = 0; k < lay.nodes.size();) {
+      if (depth[lay.nodes[k]] <= 0) {
+        ++k;
+        continue;
+      }
+      size_t end = k, deepest = k;
+      for (; end < lay.nodes.size() && depth[lay.nodes[end]] > 0; ++end)
+        if (depth[lay.nodes[end]] > depth[lay.nodes[deepest]]) deepest = end;
+      take[lay.nodes[deepest]] = 1;
+      k = end;
+    }
+  }
+  for (int n = 0; n < m.num_nodes(); ++n) {
+    if (!take[n]) continue;
+    const double radius = info.radius[n];
     const double travel = (r.col(n) - r0.col(n)).norm();
     ObstacleHit from = field.Nearest(r0.col(n), radius + travel + 1e-9);
-    if (from.obstacle < 0 || from.distance < 0) from = hit;
+    if (from.obstacle < 0 || from.distance < 0) from = field.Nearest(r.col(n), radius);
     kept.push_back({n, from.obstacle, from.point, from.normal, 0.0});
     result = HoldUpdate::kRevert;
   }

@@ -21,8 +21,11 @@ struct NetworkOptions {
   /// Contacts are added where the surface comes closer than radius (1 - this fraction of the
   /// diameter); the reported penetration stays below about this fraction.
   double contact_tolerance = 0.002;
-  /// Nodes drawn within this fraction of the diameter of a surface start in contact.
-  double contact_gap = 0.1;
+  /// Nodes drawn within this fraction of the diameter of a surface start in contact (pulled
+  /// onto it). Kept small: pulling a drawn droop flat onto a panel it only nears can ask an
+  /// inextensible cable for more length than it has; nodes further off find the surface by
+  /// falling onto it.
+  double contact_gap = 0.002;
   int max_contact_rounds = 40;
 };
 
