@@ -15,6 +15,9 @@
 namespace cablefit {
 namespace {
 
+// Samples along one node's path within a solve when looking for a crossed surface.
+constexpr int kMaxPathSamples = 1024;
+
 struct Hold {
   int node = -1;
   int obstacle = -1;
@@ -109,11 +112,14 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
   HoldUpdate result = HoldUpdate::kUnchanged;
   std::vector<Hold> kept;
   std::vector<char> held(m.num_nodes(), 0);
+  // A contact row may be measured from another contact (AssignConstraintReferences), so its
+  // multiplier alone is not its force: the reactions sum each row's share.
+  const std::vector<Vec3> reaction = SupportReactions(m, after);
   for (size_t k = 0; k < holds->size(); ++k) {
     Hold h = (*holds)[k];
     h.multiplier = after.lambda[base_rows + static_cast<int>(k)];
-    // The surface pushes along +normal with force -lambda; a pull means the node wants to leave.
-    if (-h.multiplier < -1e-9 * m.force_scale) {
+    // The surface can only push (along +normal); a pull means the node wants to leave.
+    if (reaction[net.num_spec_supports + k].dot(h.normal) < -1e-9 * m.force_scale) {
       result = HoldUpdate::kChanged;
       continue;
     }
@@ -129,18 +135,39 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
     held[h.node] = 1;
     kept.push_back(h);
   }
-  // Penetration depth of every free node.
+  // How far every free node went into a solid, and the surface it went in through. A node that
+  // passed right through a thin part (sheet metal) within one solve is caught on the way: its
+  // path from `before` is sampled at half-radius spacing, so the first sample that touches lies
+  // within the radius outside the surface it crossed (not already past the middle of a thin
+  // part, where the nearest face is the far one). Its depth counts the travel beyond it.
   std::vector<double> depth(m.num_nodes(), 0.0);
+  std::vector<ObstacleHit> entry(m.num_nodes());
   for (int n = 0; n < m.num_nodes(); ++n) {
     if (held[n] || info.fixed[n] || info.radius[n] <= 0) continue;
-    const double radius = info.radius[n];
-    const ObstacleHit hit = field.Nearest(r.col(n), radius);
-    if (hit.obstacle >= 0 && radius - hit.distance > tolerance * 2 * radius) depth[n] = radius - hit.distance;
+    const double radius = info.radius[n], slack = tolerance * 2 * radius;
+    const Vec3 from = r0.col(n), to = r.col(n);
+    const double travel = (to - from).norm();
+    const int samples = std::min(kMaxPathSamples, std::max(1, static_cast<int>(std::ceil(2 * travel / radius))));
+    for (int k = 1; k <= samples; ++k) {
+      const double u = static_cast<double>(k) / samples;
+      const ObstacleHit hit = field.Nearest(from + u * (to - from), radius);
+      if (hit.obstacle < 0 || radius - hit.distance <= slack) continue;
+      depth[n] = radius - hit.distance + (1 - u) * travel;
+      entry[n] = hit;
+      if (k == samples) {
+        // Ends inside: push it out on the side it came from (the nearest point to where it
+        // was), not through to the far side of a part thinner than the cable.
+        const ObstacleHit back = field.Nearest(from, radius + travel + 1e-9);
+        if (back.obstacle >= 0 && back.distance >= 0) entry[n] = back;
+      }
+      break;
+    }
   }
   // A span that fell into a surface is held first where it went deepest. Holding every
   // penetrating node would pin the whole stretch flat, and the holds would then peel off its
-  // edges one node per round; holding the deepest node of each penetrating stretch along a
-  // branch splits the stretch, so a long contact fills in within log2(length) rounds instead.
+  // edges one node per round. Per penetrating stretch along a branch, the nodes at least half
+  // as deep as its deepest are held; the rest of the stretch, if it still goes in, is halved
+  // again next round, so a long contact fills in within about log2(its nodes) rounds.
   std::vector<char> take(m.num_nodes(), 0);
   for (const BranchLayout& lay : net.branches) {
     for (size_t k = 0; k < lay.nodes.size();) {
@@ -148,20 +175,18 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
         ++k;
         continue;
       }
-      size_t end = k, deepest = k;
+      size_t end = k;
+      double deepest = 0.0;
       for (; end < lay.nodes.size() && depth[lay.nodes[end]] > 0; ++end)
-        if (depth[lay.nodes[end]] > depth[lay.nodes[deepest]]) deepest = end;
-      take[lay.nodes[deepest]] = 1;
+        deepest = std::max(deepest, depth[lay.nodes[end]]);
+      for (size_t i = k; i < end; ++i)
+        if (depth[lay.nodes[i]] >= 0.5 * deepest) take[lay.nodes[i]] = 1;
       k = end;
     }
   }
   for (int n = 0; n < m.num_nodes(); ++n) {
     if (!take[n]) continue;
-    const double radius = info.radius[n];
-    const double travel = (r.col(n) - r0.col(n)).norm();
-    ObstacleHit from = field.Nearest(r0.col(n), radius + travel + 1e-9);
-    if (from.obstacle < 0 || from.distance < 0) from = field.Nearest(r.col(n), radius);
-    kept.push_back({n, from.obstacle, from.point, from.normal, 0.0});
+    kept.push_back({n, entry[n].obstacle, entry[n].point, entry[n].normal, 0.0});
     result = HoldUpdate::kRevert;
   }
   *holds = kept;

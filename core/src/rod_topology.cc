@@ -89,11 +89,20 @@ void ComputeLoadCoefficients(const std::vector<Vec3>& node_force, RodModel* mode
 }
 
 void AssignConstraintReferences(RodModel* model) {
-  std::vector<int> fixed_at(model->num_nodes(), -1);
+  std::vector<int> fixed_at(model->num_nodes(), -1), contact_at(model->num_nodes(), -1);
   for (size_t k = 0; k < model->supports.size(); ++k) {
     const RodSupport& sp = model->supports[k];
     if (!sp.sliding && !sp.contact && fixed_at[sp.node] < 0) fixed_at[sp.node] = static_cast<int>(k);
+    if (sp.contact && contact_at[sp.node] < 0) contact_at[sp.node] = static_cast<int>(k);
   }
+  // A contact row may also be measured from a contact up the tree with the same normal (a cable
+  // lying along a flat panel): n.(r_k - p_k) - n.(r_j - p_j) = 0 is the same condition once row
+  // j holds, and the row then spans only the frames between the two contacts. Measured from the
+  // anchor instead, a hundred contacts along a floor make the Jacobian and the elimination dense.
+  auto same_normal = [&](const RodSupport& a, int j) {
+    return (a.frame.d3.cross(model->supports[j].frame.d3)).norm() < 1e-9 &&
+           a.frame.d3.dot(model->supports[j].frame.d3) > 0;
+  };
   for (size_t k = 0; k < model->supports.size(); ++k) {
     RodSupport& sp = model->supports[k];
     sp.reference = -1;
@@ -103,6 +112,11 @@ void AssignConstraintReferences(RodModel* model) {
       if (n == model->anchor_node) break;
       if (fixed_at[n] >= 0 && fixed_at[n] != static_cast<int>(k)) {
         sp.reference = fixed_at[n];
+        break;
+      }
+      if (sp.contact && contact_at[n] >= 0 && contact_at[n] != static_cast<int>(k) &&
+          same_normal(sp, contact_at[n])) {
+        sp.reference = contact_at[n];
         break;
       }
     }

@@ -141,5 +141,104 @@ TEST(NetworkContact, SaggingCantileverLandsOnABlock) {
               rho * length * 9.81);
 }
 
+// Clamped level 2 cm above a floor, a long soft cable falls and lies along it: the contact zone
+// is found by holding the deeper half of each penetrating stretch, so it fills in within a few
+// rounds (about log2 of its nodes) instead of one node per round, and the lying part carries
+// its own weight.
+TEST(NetworkContact, LongCableFallsOntoAFloorAndLiesAlongIt) {
+  const double length = 1.0, d = 0.006, rho = 0.1, lift = 0.02;
+  const MaterialSpec mat = TestMaterial(0.002, rho, d);
+  NetworkSpec spec;
+  const Vec3 start(0, 0, d / 2 + lift);
+  BranchSpec b = Cable(length, mat, StraightRoute(start, start + Vec3(length, 0, 0)));
+  b.supports = {Clamp(0.0, start, Vec3::UnitX())};
+  spec.branches = {b};
+  spec.obstacles.push_back({"floor", Box(Vec3(-1, -1, -0.1), Vec3(2, 1, 0))});
+  NetworkOptions opt;
+  opt.element_length = 0.005;
+  const NetworkSolution sol = SolveNetwork(spec, opt);
+  ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
+  EXPECT_TRUE(sol.summary.stable);
+  EXPECT_LE(sol.max_penetration, 0.01 * d);
+  const int nodes = static_cast<int>(std::lround(length / opt.element_length)) + 1;
+  EXPECT_GT(static_cast<int>(sol.contacts.size()), nodes / 2);  // most of it lies on the floor
+  EXPECT_LE(sol.contact_rounds, 2 * static_cast<int>(std::ceil(std::log2(nodes))) + 4);
+  // Beyond the touch-down zone each held node carries its own weight; a node left unheld (its
+  // sag between two holds stays within the tolerance) hands its weight to its neighbours, so
+  // the force on the lying stretch is checked as a whole and node by node for most of it.
+  const double node_weight = rho * opt.element_length * 9.81;
+  double first = length;
+  for (const ContactLoad& c : sol.contacts) first = std::min(first, c.s);
+  const double s0 = first + 0.1;
+  double total = sol.reactions[0].force.z(), lying = 0.0;
+  int inner = 0, exact = 0;
+  for (const ContactLoad& c : sol.contacts) {
+    total += c.force.z();
+    EXPECT_GE(c.force.z(), -1e-12) << "contact at s=" << c.s << " pulls";
+    if (c.s <= s0) continue;
+    lying += c.force.z();
+    if (c.s > length - 1e-9) continue;
+    ++inner;
+    exact += std::abs(c.force.z() - node_weight) < 1e-3 * node_weight;
+  }
+  EXPECT_NEAR(total, rho * length * 9.81, 1e-9 * rho * length * 9.81);
+  EXPECT_NEAR(lying, rho * 9.81 * (length - s0), 5 * node_weight);
+  EXPECT_GE(exact, 0.7 * inner);
+  std::printf("floor: %zu contacts of %d nodes, %d rounds, %d iterations, penetration %.3g m\n",
+              sol.contacts.size(), nodes, sol.contact_rounds, sol.summary.iterations, sol.max_penetration);
+}
+
+// A droop drawn just clear of a panel (0.3 mm, a twentieth of the diameter), with clamps too
+// close for gravity to bring it lower: it must not be pulled flat onto the panel (that needs
+// more length than the inextensible cable has, and used to make the KKT system singular).
+TEST(NetworkContact, DroopDrawnJustClearOfAPanelIsNotPulledOntoIt) {
+  const double span = 0.3, d = 0.006, droop = 0.004;
+  const MaterialSpec mat = TestMaterial(0.05, 0.05, d);
+  Polyline route;
+  const int n = 61;
+  route.points.resize(3, n);
+  for (int i = 0; i < n; ++i) {
+    const double u = static_cast<double>(i) / (n - 1);
+    route.points.col(i) = Vec3(span * u, 0, -droop * std::sin(M_PI * u));
+  }
+  route.ParameteriseByChords();
+  const double length = route.s[n - 1];
+  NetworkSpec spec;
+  BranchSpec b = Cable(length, mat, route);
+  b.supports = {Clamp(0.0, Vec3::Zero(), Vec3::UnitX()), Clamp(length, Vec3(span, 0, 0), Vec3::UnitX())};
+  b.supports[1].tangent = Vec3::UnitX();
+  spec.branches = {b};
+  const double top = -droop - d / 2 - 0.0003;
+  spec.obstacles.push_back({"panel", Box(Vec3(-0.1, -0.1, top - 0.01), Vec3(span + 0.1, 0.1, top))});
+  NetworkOptions opt;
+  opt.element_length = 0.003;
+  const NetworkSolution sol = SolveNetwork(spec, opt);
+  ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
+  EXPECT_TRUE(sol.summary.stable);
+  EXPECT_LE(sol.max_penetration, 0.01 * d);
+  for (const ContactLoad& c : sol.contacts) EXPECT_GE(c.force.z(), -1e-12) << "contact at s=" << c.s << " pulls";
+  std::printf("droop over panel: %zu contacts, %d rounds, lowest surface %.3f mm above the panel\n",
+              sol.contacts.size(), sol.contact_rounds, (sol.branches[0].points.row(2).minCoeff() - d / 2 - top) * 1e3);
+}
+
+// The same fall onto sheet metal half a millimetre thick: within one solve the free hanging
+// cable would pass right through it, so the crossing must be caught on each node's path.
+TEST(NetworkContact, FallThroughAThinSheetIsCaught) {
+  const double length = 1.0, d = 0.006, rho = 0.1, lift = 0.02;
+  NetworkSpec spec;
+  const Vec3 start(0, 0, d / 2 + lift);
+  BranchSpec b = Cable(length, TestMaterial(0.002, rho, d), StraightRoute(start, start + Vec3(length, 0, 0)));
+  b.supports = {Clamp(0.0, start, Vec3::UnitX())};
+  spec.branches = {b};
+  spec.obstacles.push_back({"sheet", Box(Vec3(-1, -1, -0.0005), Vec3(2, 1, 0))});
+  NetworkOptions opt;
+  opt.element_length = 0.005;
+  const NetworkSolution sol = SolveNetwork(spec, opt);
+  ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
+  EXPECT_LE(sol.max_penetration, 0.01 * d);
+  EXPECT_GE(sol.branches[0].points.row(2).minCoeff(), d / 2 - 0.01 * d);  // on top, not below
+  EXPECT_GT(sol.contacts.size(), 50u);
+}
+
 }  // namespace
 }  // namespace cablefit
