@@ -145,18 +145,27 @@ TEST(NetworkContact, SaggingCantileverLandsOnABlock) {
 // is found by holding the deeper half of each penetrating stretch, so it fills in within a few
 // rounds (about log2 of its nodes) instead of one node per round, and the lying part carries
 // its own weight.
-TEST(NetworkContact, LongCableFallsOntoAFloorAndLiesAlongIt) {
-  const double length = 1.0, d = 0.006, rho = 0.1, lift = 0.02;
-  const MaterialSpec mat = TestMaterial(0.002, rho, d);
-  NetworkSpec spec;
-  const Vec3 start(0, 0, d / 2 + lift);
-  BranchSpec b = Cable(length, mat, StraightRoute(start, start + Vec3(length, 0, 0)));
-  b.supports = {Clamp(0.0, start, Vec3::UnitX())};
-  spec.branches = {b};
-  spec.obstacles.push_back({"floor", Box(Vec3(-1, -1, -0.1), Vec3(2, 1, 0))});
+// A soft 1 m cantilever (d 6 mm, 0.1 kg/m) clamped level 2 cm above a slab whose top is z = 0.
+struct FallingCable {
+  static constexpr double length = 1.0, d = 0.006, rho = 0.1, lift = 0.02;
   NetworkOptions opt;
-  opt.element_length = 0.005;
-  const NetworkSolution sol = SolveNetwork(spec, opt);
+  NetworkSolution Solve(double slab_thickness) {
+    NetworkSpec spec;
+    const Vec3 start(0, 0, d / 2 + lift);
+    BranchSpec b = Cable(length, TestMaterial(0.002, rho, d), StraightRoute(start, start + Vec3(length, 0, 0)));
+    b.supports = {Clamp(0.0, start, Vec3::UnitX())};
+    spec.branches = {b};
+    spec.obstacles.push_back({"slab", Box(Vec3(-1, -1, -slab_thickness), Vec3(2, 1, 0))});
+    opt.element_length = 0.005;
+    return SolveNetwork(spec, opt);
+  }
+};
+
+TEST(NetworkContact, LongCableFallsOntoAFloorAndLiesAlongIt) {
+  FallingCable fall;
+  const NetworkSolution sol = fall.Solve(0.1);
+  const NetworkOptions& opt = fall.opt;
+  const double length = fall.length, d = fall.d, rho = fall.rho;
   ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
   EXPECT_TRUE(sol.summary.stable);
   EXPECT_LE(sol.max_penetration, 0.01 * d);
@@ -224,16 +233,9 @@ TEST(NetworkContact, DroopDrawnJustClearOfAPanelIsNotPulledOntoIt) {
 // The same fall onto sheet metal half a millimetre thick: within one solve the free hanging
 // cable would pass right through it, so the crossing must be caught on each node's path.
 TEST(NetworkContact, FallThroughAThinSheetIsCaught) {
-  const double length = 1.0, d = 0.006, rho = 0.1, lift = 0.02;
-  NetworkSpec spec;
-  const Vec3 start(0, 0, d / 2 + lift);
-  BranchSpec b = Cable(length, TestMaterial(0.002, rho, d), StraightRoute(start, start + Vec3(length, 0, 0)));
-  b.supports = {Clamp(0.0, start, Vec3::UnitX())};
-  spec.branches = {b};
-  spec.obstacles.push_back({"sheet", Box(Vec3(-1, -1, -0.0005), Vec3(2, 1, 0))});
-  NetworkOptions opt;
-  opt.element_length = 0.005;
-  const NetworkSolution sol = SolveNetwork(spec, opt);
+  FallingCable fall;
+  const NetworkSolution sol = fall.Solve(0.0005);
+  const double d = fall.d;
   ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
   EXPECT_LE(sol.max_penetration, 0.01 * d);
   EXPECT_GE(sol.branches[0].points.row(2).minCoeff(), d / 2 - 0.01 * d);  // on top, not below
