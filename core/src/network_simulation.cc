@@ -31,13 +31,14 @@ struct NodeInfo {
   std::vector<double> radius;
   std::vector<int> branch;
   std::vector<double> s;
+  std::vector<int> index;   // position in that branch's node list
   std::vector<char> fixed;  // held in position by a support: no contact there
 };
 
 NodeInfo NodeTable(const NetworkModel& net) {
   const int nn = net.rod.num_nodes();
   NodeInfo t{std::vector<double>(nn, 0.0), std::vector<int>(nn, -1), std::vector<double>(nn, 0.0),
-             std::vector<char>(nn, 0)};
+             std::vector<int>(nn, -1), std::vector<char>(nn, 0)};
   for (size_t b = 0; b < net.branches.size(); ++b) {
     const BranchLayout& lay = net.branches[b];
     const double r = 0.5 * net.spec.branches[b].material.diameter;
@@ -47,6 +48,7 @@ NodeInfo NodeTable(const NetworkModel& net) {
       if (t.branch[n] < 0) {
         t.branch[n] = static_cast<int>(b);
         t.s[n] = lay.node_s[k];
+        t.index[n] = static_cast<int>(k);
       }
     }
   }
@@ -102,9 +104,43 @@ enum class HoldUpdate { kUnchanged, kChanged, kRevert };
 // solid gets a hold on the surface it came from (the nearest point to where it was before, so
 // a node that fell right through a thin part is still pushed back out on the side it came
 // from), and the caller restarts from `before` (kRevert).
+// Holds to release: those that pull, and with `extra` > 0 also up to `extra` held nodes next to
+// each of them along its branch. A stretch pinned flat on a surface peels off at its edges one
+// node per round; releasing more each round it goes on (the caller doubles `extra`) finds the
+// edge in log2 rounds, and nodes released too many fall back in and are held again.
+std::vector<char> HoldsToRelease(const NetworkModel& net, const RodState& after, const NodeInfo& info,
+                                 const std::vector<Hold>& holds, int extra) {
+  const RodModel& m = net.rod;
+  // A contact row may be measured from another contact (AssignConstraintReferences), so its
+  // multiplier alone is not its force: the reactions sum each row's share.
+  const std::vector<Vec3> reaction = SupportReactions(m, after);
+  std::vector<int> hold_at(m.num_nodes(), -1);
+  for (size_t k = 0; k < holds.size(); ++k) hold_at[holds[k].node] = static_cast<int>(k);
+  std::vector<char> release(holds.size(), 0);
+  for (size_t k = 0; k < holds.size(); ++k) {
+    // The surface can only push (along +normal); a pull means the node wants to leave.
+    if (reaction[net.num_spec_supports + k].dot(holds[k].normal) >= -1e-9 * m.force_scale) continue;
+    release[k] = 1;
+    const int n = holds[k].node, b = info.branch[n];
+    if (extra <= 0 || b < 0) continue;
+    const std::vector<int>& nodes = net.branches[b].nodes;
+    const int size = static_cast<int>(nodes.size());
+    for (int dir : {-1, 1}) {
+      // At most half of the held run beyond this hold: its middle stays, so a run pulling at
+      // both edges (a couple carrying the bending moment where the cable leaves the surface)
+      // shrinks towards its middle instead of vanishing and falling back in as a whole.
+      int run = 0;
+      for (int i = info.index[n] + dir; i >= 0 && i < size && hold_at[nodes[i]] >= 0; i += dir) ++run;
+      const int count = std::min(extra, run / 2 - 1);  // if both edges pull, two stay
+      for (int c = 0, i = info.index[n] + dir; c < count; ++c, i += dir) release[hold_at[nodes[i]]] = 1;
+    }
+  }
+  return release;
+}
+
 HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const RodState& after,
                        const ObstacleField& field, const NodeInfo& info, double tolerance,
-                       std::vector<Hold>* holds) {
+                       int extra_release, std::vector<Hold>* holds) {
   const RodModel& m = net.rod;
   const Eigen::Matrix3Xd r = after.NodePositions(m);
   const Eigen::Matrix3Xd r0 = before.NodePositions(m);
@@ -112,14 +148,11 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
   HoldUpdate result = HoldUpdate::kUnchanged;
   std::vector<Hold> kept;
   std::vector<char> held(m.num_nodes(), 0);
-  // A contact row may be measured from another contact (AssignConstraintReferences), so its
-  // multiplier alone is not its force: the reactions sum each row's share.
-  const std::vector<Vec3> reaction = SupportReactions(m, after);
+  const std::vector<char> release = HoldsToRelease(net, after, info, *holds, extra_release);
   for (size_t k = 0; k < holds->size(); ++k) {
     Hold h = (*holds)[k];
     h.multiplier = after.lambda[base_rows + static_cast<int>(k)];
-    // The surface can only push (along +normal); a pull means the node wants to leave.
-    if (reaction[net.num_spec_supports + k].dot(h.normal) < -1e-9 * m.force_scale) {
+    if (release[k]) {
       result = HoldUpdate::kChanged;
       continue;
     }
@@ -166,8 +199,9 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
   // A span that fell into a surface is held first where it went deepest. Holding every
   // penetrating node would pin the whole stretch flat, and the holds would then peel off its
   // edges one node per round. Per penetrating stretch along a branch, the nodes at least half
-  // as deep as its deepest are held; the rest of the stretch, if it still goes in, is halved
-  // again next round, so a long contact fills in within about log2(its nodes) rounds.
+  // as deep as its deepest (on the same face) are held; the rest of the stretch, if it still
+  // goes in, is halved again next round, so a long contact fills in within about log2(its
+  // nodes) rounds.
   std::vector<char> take(m.num_nodes(), 0);
   for (const BranchLayout& lay : net.branches) {
     for (size_t k = 0; k < lay.nodes.size();) {
@@ -175,12 +209,18 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
         ++k;
         continue;
       }
-      size_t end = k;
-      double deepest = 0.0;
+      size_t end = k, deepest = k;
       for (; end < lay.nodes.size() && depth[lay.nodes[end]] > 0; ++end)
-        deepest = std::max(deepest, depth[lay.nodes[end]]);
-      for (size_t i = k; i < end; ++i)
-        if (depth[lay.nodes[i]] >= 0.5 * deepest) take[lay.nodes[i]] = 1;
+        if (depth[lay.nodes[end]] > depth[lay.nodes[deepest]]) deepest = end;
+      const ObstacleHit& face = entry[lay.nodes[deepest]];
+      for (size_t i = k; i < end; ++i) {
+        const int n = lay.nodes[i];
+        // Only nodes on the deepest one's face: holds on the tilted tangent planes of an edge
+        // next to one on its top wedge the cable between them.
+        if (depth[n] >= 0.5 * depth[lay.nodes[deepest]] && entry[n].obstacle == face.obstacle &&
+            entry[n].normal.dot(face.normal) > 1 - 1e-9)
+          take[n] = 1;
+      }
       k = end;
     }
   }
@@ -340,7 +380,7 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;
-  int iterations = 0;
+  int iterations = 0, streak = 0, extra_release = 0, widest = 1 << 20;
   for (int round = 0; round < std::max(1, options.max_contact_rounds); ++round) {
     net = WithHolds(base, holds, info);
     FitStateToHolds(net, holds, &st);
@@ -350,11 +390,17 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
     sol.contact_rounds = round + 1;
     if (!sol.summary.converged() || field.empty()) break;
     const HoldUpdate update =
-        UpdateHolds(net, before, st, field, info, options.contact_tolerance, &holds);
+        UpdateHolds(net, before, st, field, info, options.contact_tolerance, extra_release, &holds);
     if (update == HoldUpdate::kUnchanged) break;
+    // Rounds that only release or move holds in a row widen the next release: 0, 1, 3, 7, ...
+    // Released too many (nodes fell back in right after a widened release): never widen that
+    // far again, so the contact set cannot cycle between the same two sets.
+    if (update == HoldUpdate::kRevert && extra_release > 0) widest = extra_release / 2;
+    streak = update == HoldUpdate::kChanged ? streak + 1 : 0;
+    extra_release = std::min(widest, (1 << std::min(streak, 20)) - 1);
     if (update == HoldUpdate::kRevert) {
-      // Keep the solved state's frames for nodes that stayed clear? No: restart from the last
-      // state without penetration, so the new holds start on the right side of the surface.
+      // Restart from the last state without penetration, so the new holds start on the side of
+      // the surface their nodes came from.
       const std::vector<Eigen::Vector4d> q = before.q;
       st.q = q;
     }

@@ -100,5 +100,43 @@ TEST(RelaxNetwork, JunctionNamingAnUnknownCableIsAnError) {
   EXPECT_NE(one.err.find("two or more cable ends"), std::string::npos) << one.err;
 }
 
+// A straight cable (clamped, far clamp sliding axially) over a 2 mm wide block under its
+// mid-span whose top lies half the free sag below it (data/beam_on_block.step, made by
+// data/beam_on_block.py). Linear beam theory: a mid-span point force R lifts the mid-span by
+// R L^3 / (192 EI), so the block carries R = 192 EI (w_free - w_block) / L^3 and the cable's
+// deepest point is w_block.
+TEST(RelaxNetwork, CableSaggingOntoABlockCarriesTheBeamTheoryForce) {
+  const double length = 0.5, ei = 0.05, q = 0.05 * 9.81, d = 0.005;
+  const double w_free = q * std::pow(length, 4) / (384 * ei), w_block = 0.5 * w_free;
+  const double expected = 192 * ei * (w_free - w_block) / std::pow(length, 3);
+  const fs::path dir = testing::FreshTempDir("relax_block");
+  std::ofstream(dir / "harness.json") << R"({"gravity": [0, 0, -9.81],
+    "default": {"material": {"bending_stiffness": 0.05, "torsional_stiffness": 0.04,
+                             "linear_density": 0.05},
+                "end": {"kind": "clamp", "sliding": true}}})";
+  const fs::path step = testing::SourceDir() / "tests/addin/relax/data/beam_on_block.step";
+  const auto run = RunCablefit("relax " + Q(step) + " --out " + Q(dir / "out") + " --config " +
+                               Q(dir / "harness.json") + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json file = json::ReadJsonFile((dir / "out/beam_on_block.json").string());
+  ASSERT_EQ(file.at("networks").size(), 1u);
+  const Json& net = file.at("networks")[0];
+  EXPECT_TRUE(net.at("converged").get<bool>());
+  EXPECT_LE(net.at("max_penetration").get<double>(), 0.01 * d);
+  ASSERT_FALSE(net.at("contacts").empty());
+  double total = 0.0;
+  for (const Json& c : net.at("contacts")) {
+    EXPECT_EQ(c.at("solid").get<std::string>(), "block");
+    EXPECT_EQ(c.at("cable").get<std::string>(), "cable");
+    EXPECT_GE(c.at("force")[2].get<double>(), 0.0);
+    total += c.at("force")[2].get<double>();
+  }
+  const double sag = CableNamed(file, "cable").at("deviation").at("max").get<double>();
+  std::printf("block: force %.6f N vs beam %.6f N, deepest %.4f mm vs %.4f mm\n", total, expected,
+              sag * 1e3, w_block * 1e3);
+  EXPECT_NEAR(total, expected, 0.01 * expected);
+  EXPECT_NEAR(sag, w_block, 0.02 * w_block);
+}
+
 }  // namespace
 }  // namespace cablefit
