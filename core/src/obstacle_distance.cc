@@ -49,7 +49,11 @@ ObstacleField::ObstacleField(const std::vector<ObstacleSpec>& obstacles) {
       t.b = m.vertices.col(m.faces(1, f));
       t.c = m.vertices.col(m.faces(2, f));
       const Vec3 n = (t.b - t.a).cross(t.c - t.a);
-      if (n.norm() == 0) continue;  // degenerate face: no side to push from
+      // Degenerate faces have no side to push from; a non-finite vertex would also break the
+      // tree's median split (NaN has no order).
+      if (!(n.norm() > 0) || !std::isfinite(n.norm()) || !t.a.allFinite() || !t.b.allFinite() ||
+          !t.c.allFinite())
+        continue;
       t.normal = n.normalized();
       t.box.extend(t.a);
       t.box.extend(t.b);

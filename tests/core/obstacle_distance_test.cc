@@ -92,5 +92,25 @@ TEST(ObstacleField, InsideAClosedSolidIsNegative) {
   EXPECT_EQ(ObstacleField({}).Nearest(Vec3::Zero(), 1.0).obstacle, -1);
 }
 
+// Degenerate and non-finite faces are left out instead of poisoning the tree's ordering.
+TEST(ObstacleField, DegenerateAndNonFiniteFacesAreSkipped) {
+  TriangleMesh m = Sphere(Vec3::Zero(), 1.0, 8, 16);
+  const int faces = static_cast<int>(m.faces.cols());
+  m.vertices.conservativeResize(3, m.vertices.cols() + 3);
+  const int v = static_cast<int>(m.vertices.cols()) - 3;
+  m.vertices.col(v) = Vec3(std::nan(""), 0, 0);
+  m.vertices.col(v + 1) = Vec3(5, 5, 5);
+  m.vertices.col(v + 2) = Vec3(5, 5, 5);
+  m.faces.conservativeResize(3, faces + 2);
+  m.faces.col(faces) = Eigen::Vector3i(v, v + 1, 0);      // NaN vertex
+  m.faces.col(faces + 1) = Eigen::Vector3i(v + 1, v + 2, 1);  // zero area
+  ObstacleField field({{"ball", m}});
+  EXPECT_LT(field.num_triangles(), faces + 1);
+  const ObstacleHit out = field.Nearest(Vec3(1.2, 0.0, 0.0), 0.5);
+  ASSERT_EQ(out.obstacle, 0);
+  EXPECT_GT(out.distance, 0.19);
+  EXPECT_LT(out.distance, 0.21);
+}
+
 }  // namespace
 }  // namespace cablefit
