@@ -387,8 +387,52 @@ void EvaluateStability(const RodModel& model, const RodState& state, StaticsSumm
 
 StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
                                 const StaticsOptions& options);
+StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
+                                     const StaticsOptions& options);
+
+namespace {
+
+// Why a failed solve had no chance: two supports holding position with no more cable between
+// them than their distance (a cable drawn straight between two clamps). An inextensible cable
+// cannot hang there under a transverse load, and the Newton system is singular in that stretch.
+std::string TautStretch(const RodModel& model) {
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const RodSupport& sp = model.supports[k];
+    if (sp.constraint_row < 0 || sp.sliding || sp.contact) continue;
+    const int ref = sp.reference >= 0 ? sp.reference : model.anchor_support;
+    if (ref < 0 || ref == static_cast<int>(k)) continue;
+    const RodSupport& from = model.supports[ref];
+    if (from.sliding || from.contact) continue;
+    double path = 0.0;
+    model.ForEachPathElementFrom(sp.reference >= 0 ? from.node : -1, sp.node,
+                                 [&](int j, int) { path += model.element_length[j]; });
+    const double chord = (sp.position - from.position).norm();
+    if (path > 0 && path <= chord * (1 + 1e-6)) {
+      std::ostringstream os;
+      os.precision(6);
+      os << "the supports at s=" << from.s << " m and s=" << sp.s << " m are " << chord
+         << " m apart with " << path
+         << " m of cable between them: taut, an inextensible cable cannot hang there (give it "
+            "slack or let one slide)";
+      return os.str();
+    }
+  }
+  return "";
+}
+
+}  // namespace
 
 StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options) {
+  StaticsSummary sum = SolveStaticsAndEscape(model, state, options);
+  if (!sum.converged() && sum.termination != TerminationType::kCancelled) {
+    const std::string taut = TautStretch(model);
+    if (!taut.empty()) sum.message = taut + "; " + sum.message;
+  }
+  return sum;
+}
+
+StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
+                                     const StaticsOptions& options) {
   const RodState start = *state;
   StaticsSummary sum = SolveStaticsFrom(model, state, options);
   if (!sum.converged() && !options.ramp_loads && sum.termination != TerminationType::kCancelled) {
