@@ -15,6 +15,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/input_file.h"
@@ -320,6 +321,7 @@ PointCloud ReadPly(const std::string& path) {
     const char* what = what_text.c_str();
     if (e.properties.empty()) continue;
     for (std::uint64_t i = 0; i < e.count; ++i) {
+      if ((i & 0xFFFF) == 0) CheckDeadline();  // a batch item's --timeout covers parsing too
       for (std::size_t j = 0; j < e.properties.size(); ++j) {
         const Property& p = e.properties[j];
         if (p.is_list) {

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "cablefit/core/deadline.h"
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/ply_reader.h"
 #include "io_test_files.h"
@@ -66,6 +67,21 @@ TEST(PlyRobustness, RandomByteCorruption) {
       testing::WriteText(dir / "c.ply", damaged);
       ReadsOrRejects(dir / "c.ply");
     }
+  }
+}
+
+// A batch item's --timeout covers reading its scan: with the deadline passed, reading a large
+// cloud ends with DeadlineExceeded instead of running to the end; without one it reads.
+TEST(PlyRobustness, ReadingHonoursTheItemDeadline) {
+  const auto dir = testing::FreshTempDir("io-deadline");
+  PointCloud cloud;
+  cloud.points = Eigen::Matrix3Xd::Random(3, 200000);
+  for (bool binary : {false, true}) {
+    const auto path = dir / (binary ? "big-binary.ply" : "big-ascii.ply");
+    WritePly(path.string(), cloud, binary);
+    EXPECT_EQ(ReadPly(path.string()).size(), 200000);
+    const ScopedDeadline deadline(1e-9);
+    EXPECT_THROW(ReadPly(path.string()), DeadlineExceeded) << path;
   }
 }
 
