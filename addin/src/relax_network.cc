@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -209,6 +210,20 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
       res.solution.reactions.push_back(fine.reactions[first + k]);
     MeasureRelaxation(config.min_bend_radius_factor, &r);
     out.cables.push_back(std::move(r));
+  }
+  // Contact is held at nodes: over a sharp edge the stretch between two nodes can cut the
+  // corner. Said on every cable in contact rather than hidden in max_penetration.
+  if (fine.max_penetration > 0.01 * min_d) {
+    char note[256];
+    std::snprintf(note, sizeof note,
+                  "contact is held at nodes: between two of them the cable cuts up to %.2f mm "
+                  "(%.0f %% of the thinnest diameter) into a solid, e.g. over a sharp edge",
+                  fine.max_penetration * 1e3, 100 * fine.max_penetration / min_d);
+    std::vector<char> touching(out.cables.size(), 0);
+    for (const ContactLoad& c : fine.contacts)
+      if (c.branch >= 0 && c.branch < static_cast<int>(touching.size())) touching[c.branch] = 1;
+    for (size_t b = 0; b < out.cables.size(); ++b)
+      if (touching[b]) out.cables[b].setup.notes.push_back(note);
   }
   for (CableRelaxation& r : out.cables) {
     r.result.estimated_error = error;

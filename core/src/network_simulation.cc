@@ -394,8 +394,8 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
     if (update == HoldUpdate::kUnchanged) break;
     // Rounds that only release or move holds in a row widen the next release: 0, 1, 3, 7, ...
     // Released too many (nodes fell back in right after a widened release): never widen that
-    // far again, so the contact set cannot cycle between the same two sets.
-    if (update == HoldUpdate::kRevert && extra_release > 0) widest = extra_release / 2;
+    // far again (but always by one), so the contact set cannot cycle between the same two sets.
+    if (update == HoldUpdate::kRevert && extra_release > 0) widest = std::max(1, extra_release / 2);
     streak = update == HoldUpdate::kChanged ? streak + 1 : 0;
     extra_release = std::min(widest, (1 << std::min(streak, 20)) - 1);
     if (update == HoldUpdate::kRevert) {

@@ -26,7 +26,7 @@ struct NetworkOptions {
   /// inextensible cable for more length than it has; nodes further off find the surface by
   /// falling onto it.
   double contact_gap = 0.002;
-  int max_contact_rounds = 40;
+  int max_contact_rounds = 100;  // each round is a warm solve of a few Newton iterations
 };
 
 /// What branch b exerts on a junction's body, at the junction node (world frame).
