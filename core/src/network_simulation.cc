@@ -99,11 +99,6 @@ void FitStateToHolds(const NetworkModel& net, const std::vector<Hold>& holds, Ro
 
 enum class HoldUpdate { kUnchanged, kChanged, kRevert };
 
-// Updates the active set from the state `after` a solve that started from `before`. Holds that
-// pull are released and the others follow the nearest surface point. A node that went into a
-// solid gets a hold on the surface it came from (the nearest point to where it was before, so
-// a node that fell right through a thin part is still pushed back out on the side it came
-// from), and the caller restarts from `before` (kRevert).
 // Holds to release: those that pull, and with `extra` > 0 also up to `extra` held nodes next to
 // each of them along its branch. A stretch pinned flat on a surface peels off at its edges one
 // node per round; releasing more each round it goes on (the caller doubles `extra`) finds the
@@ -138,6 +133,10 @@ std::vector<char> HoldsToRelease(const NetworkModel& net, const RodState& after,
   return release;
 }
 
+// Updates the active set from the state `after` a solve that started from `before`. Holds that
+// pull (and, widening, their held neighbours: HoldsToRelease) are released and the others follow
+// the nearest surface point. A node that went into a solid, or through it on the way, gets a
+// hold on the surface it came from, and the caller restarts from `before` (kRevert).
 HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const RodState& after,
                        const ObstacleField& field, const NodeInfo& info, double tolerance,
                        int extra_release, std::vector<Hold>* holds) {
