@@ -21,12 +21,14 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "cablefit/core/errors.h"
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
+#include "cad_read_in_process.h"
 #include "crash_probe.h"
 #include "curve_routes.h"
 #include "occt_session.h"
@@ -35,6 +37,13 @@
 
 namespace cablefit {
 namespace {
+
+// Text that reads back as exactly the same double.
+std::string ExactText(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
 
 std::string Lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -285,12 +294,23 @@ HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& option
   if (!iges && ext != ".step" && ext != ".stp" && ext != ".p21") {
     throw FileError(path, "unknown CAD extension '" + ext + "' (expected .step, .stp, .iges, .igs)");
   }
+  if (options.probe_seconds > 0) {
+    ProbeFileInChild(path, iges ? "the IGES reader" : "the STEP reader",
+                     {"read", path, ExactText(options.sample_spacing),
+                      ExactText(options.mesh_relative_deflection),
+                      ExactText(options.min_tube_area_fraction),
+                      ExactText(options.min_tube_aspect), ExactText(options.junction_tolerance)},
+                     options.probe_seconds);
+  }
+  return internal::ReadCadFileInThisProcess(path, options);
+}
+
+namespace internal {
+
+HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOptions& options) {
+  const std::string ext = Lower(std::filesystem::path(path).extension().string());
+  const bool iges = ext == ".igs" || ext == ".iges";
   InitOcctSession();
-  ProbeInChildProcess(path, iges ? "the IGES reader" : "the STEP reader", [&] {
-    HarnessDrawing probe;
-    DrawingBuilder builder(ReadDocument(path, iges, &probe.length_unit), options, &probe);
-    builder.WalkFreeShapes();
-  });
   HarnessDrawing drawing;
   drawing.source_path = path;
   try {
@@ -311,4 +331,5 @@ HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& option
   return drawing;
 }
 
+}  // namespace internal
 }  // namespace cablefit

@@ -1,5 +1,7 @@
 #include "cablefit/formats/harness_drawing.h"
 
+#include <cmath>
+
 #include "cablefit/formats/cad_file.h"
 
 namespace cablefit {
@@ -56,6 +58,8 @@ bool CadReadOptions::IsValid(std::string* why) const {
     return fail("min_tube_area_fraction must be in (0, 1]");
   if (!(min_tube_aspect >= 0)) return fail("min_tube_aspect must be >= 0");
   if (!(junction_tolerance >= 0)) return fail("junction_tolerance must be >= 0");
+  if (!(probe_seconds >= 0 && std::isfinite(probe_seconds)))
+    return fail("probe_seconds must be finite and >= 0");
   return true;
 }
 

@@ -2,12 +2,13 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <TopoDS.hxx>
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -19,47 +20,55 @@
 namespace cablefit {
 namespace {
 
-constexpr int kSweepFailed = 3;  // child exit status: the file holds InvalidInput's message
-
-// A fresh empty file in the temporary folder, removed when this goes out of scope.
-class TempFile {
+// An anonymous in-memory file (memfd): nothing is left in a temporary folder when this process
+// or the helper is killed. Close-on-exec, so children that other threads start at the same
+// time do not inherit it; RunChildProcess hands it to the helper explicitly.
+class MemoryFile {
  public:
-  TempFile() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "cablefit-tube-XXXXXX").string();
-    const int fd = ::mkstemp(pattern.data());
-    if (fd >= 0) {
-      ::close(fd);
-      path_ = pattern;
+  explicit MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
+    // The helper gets it as descriptor 3 or 4: keep ours above those so that dup2 never maps a
+    // descriptor onto itself (which would leave close-on-exec set).
+    if (fd_ >= 0 && fd_ <= kHelperFdLast) {
+      const int moved = ::fcntl(fd_, F_DUPFD_CLOEXEC, kHelperFdLast + 1);
+      ::close(fd_);
+      fd_ = moved;
     }
   }
-  ~TempFile() {
-    if (!path_.empty()) std::remove(path_.c_str());
+  ~MemoryFile() {
+    if (fd_ >= 0) ::close(fd_);
   }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  const std::string& path() const { return path_; }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+  int fd() const { return fd_; }
+  // A path that opens the file anew from the start, for OCCT's path-based reading and writing.
+  std::string path() const { return "/proc/self/fd/" + std::to_string(fd_); }
 
  private:
-  std::string path_;  // empty when no file could be created
+  static constexpr int kHelperFdLast = 4;
+  int fd_;
 };
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 }  // namespace
 
 TopoDS_Shape MakeTubeSolidInChild(const TopoDS_Wire& spine, double diameter, double max_seconds) {
-  const TempFile file;
-  if (file.path().empty()) return MakeTubeSolid(spine, diameter);
-  const auto outcome = RunInChildProcess(
-      [&] {
-        try {
-          const TopoDS_Shape tube = MakeTubeSolid(spine, diameter);
-          return BRepTools::Write(tube, file.path().c_str()) ? 0 : 4;
-        } catch (const InvalidInput& e) {
-          std::ofstream(file.path(), std::ios::trunc) << e.what();
-          return kSweepFailed;
-        }
-      },
-      max_seconds);
+  const MemoryFile spine_file("cablefit-spine");
+  const MemoryFile tube_file("cablefit-tube");
+  if (spine_file.fd() < 0 || tube_file.fd() < 0 ||
+      !BRepTools::Write(spine, spine_file.path().c_str())) {
+    return MakeTubeSolid(spine, diameter);
+  }
+  char diameter_text[32];
+  std::snprintf(diameter_text, sizeof diameter_text, "%.17g", diameter);
+  const auto outcome =
+      RunOcctChild({"sweep", "3", diameter_text, "4"}, max_seconds,
+                   {{spine_file.fd(), 3}, {tube_file.fd(), 4}});
   if (!outcome) return MakeTubeSolid(spine, diameter);
   if (outcome->timed_out) {
     throw InvalidInput("the tube sweep did not finish within " +
@@ -70,20 +79,33 @@ TopoDS_Shape MakeTubeSolidInChild(const TopoDS_Wire& spine, double diameter, dou
                        std::to_string(outcome->signal) + ": " + ::strsignal(outcome->signal) +
                        ")");
   }
-  if (outcome->exit_code == kSweepFailed) {
-    std::ifstream in(file.path());
-    std::stringstream message;
-    message << in.rdbuf();
-    throw InvalidInput(message.str());
-  }
+  if (outcome->exit_code == kTubeSweepFailedExit) throw InvalidInput(ReadAll(tube_file.path()));
   TopoDS_Shape tube;
   BRep_Builder builder;
-  if (outcome->exit_code != 0 || !BRepTools::Read(tube, file.path().c_str(), builder) ||
+  if (outcome->exit_code != 0 || !BRepTools::Read(tube, tube_file.path().c_str(), builder) ||
       tube.IsNull()) {
     throw InvalidInput("the tube sweep failed (exit status " +
                        std::to_string(outcome->exit_code) + ")");
   }
   return tube;
+}
+
+int SweepTubeInHelper(int spine_fd, double diameter, int tube_fd) {
+  const std::string spine_path = "/proc/self/fd/" + std::to_string(spine_fd);
+  const std::string tube_path = "/proc/self/fd/" + std::to_string(tube_fd);
+  TopoDS_Shape spine;
+  BRep_Builder builder;
+  if (!BRepTools::Read(spine, spine_path.c_str(), builder) || spine.IsNull() ||
+      spine.ShapeType() != TopAbs_WIRE) {
+    return 4;
+  }
+  try {
+    const TopoDS_Shape tube = MakeTubeSolid(TopoDS::Wire(spine), diameter);
+    return BRepTools::Write(tube, tube_path.c_str()) ? 0 : 4;
+  } catch (const InvalidInput& e) {
+    std::ofstream(tube_path, std::ios::trunc) << e.what();
+    return kTubeSweepFailedExit;
+  }
 }
 
 }  // namespace cablefit

@@ -19,6 +19,10 @@ struct CadReadOptions {
   double min_tube_aspect = 2.0;
   /// Cable ends closer than this [m] are recorded as one junction.
   double junction_tolerance = 1e-4;
+  /// [s] Longest the crash probe of a STEP/IGES read (a helper process reading the file first,
+  /// since OCCT segfaults on some corrupt files) may take before the file is reported as failed;
+  /// 0 reads in this process only, without the probe.
+  double probe_seconds = 600.0;
 
   bool IsValid(std::string* why) const;
 };
