@@ -1,6 +1,7 @@
 // ReadCadFile: STEP/IGES through XDE, assembly walked with names and colours; curves and tube
 // solids become cables, everything else is kept as solids.
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -92,6 +93,57 @@ TriangleMesh Tessellate(const TopoDS_Shape& shape, double relative_deflection) {
   return mesh;
 }
 
+double ChainLength(const Eigen::Matrix3Xd& points) {  // 3 x n, any unit
+  double length = 0;
+  for (Eigen::Index i = 1; i < points.cols(); ++i) length += (points.col(i) - points.col(i - 1)).norm();
+  return length;
+}
+
+// Sews loose faces into shells, one body per connected shell (a face that joins nothing stays
+// a body of its own). Tolerance 0.01 mm: the precision CAD exporters write surfaces to, far
+// below the size of any cable, so only edges that were drawn as one are joined.
+std::vector<TopoDS_Shape> SewFaces(const std::vector<TopoDS_Shape>& faces) {
+  std::vector<TopoDS_Shape> bodies;
+  if (faces.empty()) return bodies;
+  BRepBuilderAPI_Sewing sewing(0.01);  // [OCCT unit = mm]
+  for (const TopoDS_Shape& f : faces) sewing.Add(f);
+  sewing.Perform();
+  const TopoDS_Shape sewn = sewing.SewedShape();
+  if (sewn.IsNull()) return faces;
+  for (TopExp_Explorer ex(sewn, TopAbs_SHELL); ex.More(); ex.Next()) bodies.push_back(ex.Current());
+  for (TopExp_Explorer ex(sewn, TopAbs_FACE, TopAbs_SHELL); ex.More(); ex.Next()) {
+    bodies.push_back(ex.Current());
+  }
+  return bodies;
+}
+
+// A closed curve lying in one plane: the profile sketch a sweep was made from (FreeCAD keeps
+// them beside the swept cable), never a cable route, which would need two ends to hold.
+bool IsClosedPlanar(const Eigen::Matrix3Xd& points) {  // 3 x n [OCCT unit]
+  if (points.cols() < 4) return false;
+  const Eigen::Vector3d centroid = points.rowwise().mean();
+  const Eigen::Matrix3Xd centred = points.colwise() - centroid;
+  const double size = centred.colwise().norm().maxCoeff();
+  if (!(size > 0)) return false;
+  if ((points.col(0) - points.col(points.cols() - 1)).norm() > 1e-6 * size) return false;
+  const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred, Eigen::ComputeThinU);
+  const Eigen::Vector3d normal = svd.matrixU().col(2);
+  return (normal.transpose() * centred).cwiseAbs().maxCoeff() <= 1e-4 * size;
+}
+
+// Names that STEP/IGES exporters write when the user gave none: treated as no name, so that
+// such cables get distinct names from their position instead of one shared placeholder.
+bool IsPlaceholderName(const std::string& name) {
+  const std::string lower = Lower(name);
+  static const char* const kPlaceholders[] = {
+      "the product name", "none", "n/a", "unnamed",
+      // OCCT's IGES reader names unnamed entities by their shape type.
+      "compound", "compsolid", "solid", "shell", "face", "wire", "edge", "vertex"};
+  if (lower.empty() || lower.rfind("open cascade step translator", 0) == 0) return true;
+  return std::any_of(std::begin(kPlaceholders), std::end(kPlaceholders),
+                     [&](const char* p) { return lower == p; });
+}
+
 class DrawingBuilder {
  public:
   DrawingBuilder(Handle(TDocStd_Document) doc, const CadReadOptions& options,
@@ -119,10 +171,12 @@ class DrawingBuilder {
   void Walk(const TDF_Label& label, const TopLoc_Location& location, const std::string& parent,
             std::optional<SrgbColor> inherited) {
     std::string name = LabelName(label);
+    if (IsPlaceholderName(name)) name.clear();
     if (const auto c = LabelColor(doc_, label)) inherited = c;
     TDF_Label referred;
     if (XCAFDoc_ShapeTool::IsReference(label) && XCAFDoc_ShapeTool::GetReferredShape(label, referred)) {
-      const std::string product = LabelName(referred);
+      std::string product = LabelName(referred);
+      if (IsPlaceholderName(product)) product.clear();
       // STEP instance names are often generated ("NAUO12"): prefer the product's name.
       if (!product.empty()) name = product;
       WalkShape(referred, location * XCAFDoc_ShapeTool::GetLocation(label), name.empty() ? parent : name,
@@ -145,7 +199,7 @@ class DrawingBuilder {
     }
     const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label).Moved(location);
     if (shape.IsNull()) return;
-    AddShape(label, shape, name.empty() ? "unnamed" : name, color);
+    AddShape(label, shape, name, color);  // an empty name is given one by NameCablesUniquely
   }
 
   // A part's solids may carry their own names/colours as sub-shape labels.
@@ -155,7 +209,7 @@ class DrawingBuilder {
     if (shapes_->FindSubShape(part, sub.Located(TopLoc_Location()), sub_label) ||
         shapes_->FindSubShape(part, sub, sub_label)) {
       const std::string n = LabelName(sub_label);
-      if (!n.empty()) style.name = n;
+      if (!IsPlaceholderName(n)) style.name = n;
       if (const auto c = LabelColor(doc_, sub_label)) style.color = c;
     }
     return style;
@@ -169,6 +223,12 @@ class DrawingBuilder {
         ExtractCurveRoutes(shape, options_.sample_spacing / kMetresPerOcctUnit,
                            std::max(options_.junction_tolerance / kMetresPerOcctUnit, 1e-6));
     for (const CurveRoute& route : routes) {
+      if (IsClosedPlanar(route.points)) {
+        drawing_->skipped.push_back(
+            "'" + (style.name.empty() ? std::string("unnamed") : style.name) +
+            "': a closed planar curve (a sketch profile), not a cable route");
+        continue;
+      }
       DrawnCable cable;
       cable.name = style.name;
       cable.centreline = ToPolyline(route.points);
@@ -183,17 +243,40 @@ class DrawingBuilder {
     for (TopExp_Explorer ex(shape, TopAbs_SHELL, TopAbs_SOLID); ex.More(); ex.Next()) {
       bodies.push_back(ex.Current());
     }
+    // Loose faces (IGES surface models: a tube drawn as two half-surfaces) are sewn into shells.
+    std::vector<TopoDS_Shape> loose;
+    for (TopExp_Explorer ex(shape, TopAbs_FACE, TopAbs_SHELL); ex.More(); ex.Next()) {
+      loose.push_back(ex.Current());
+    }
+    for (TopoDS_Shape& sewn : SewFaces(loose)) bodies.push_back(std::move(sewn));
     TubeRecoveryOptions tube_options;
     tube_options.sample_spacing = options_.sample_spacing / kMetresPerOcctUnit;
     tube_options.min_area_fraction = options_.min_tube_area_fraction;
-    tube_options.min_aspect = options_.min_tube_aspect;
+    tube_options.min_aspect = 0;  // slenderness is checked below, to say why a tube is no cable
     for (const TopoDS_Shape& body : bodies) {
       const Style body_style = bodies.size() > 1 ? SubStyle(label, body, style) : style;
-      if (const auto tube = RecoverTube(body, tube_options)) {
+      std::optional<RecoveredTube> tube = RecoverTube(body, tube_options);
+      if (tube) {
+        const double length = ChainLength(tube->centres);
+        const double slenderness = length / (2 * tube->radius);
+        if (slenderness < options_.min_tube_aspect) {
+          char line[200];
+          std::snprintf(line, sizeof line,
+                        "a tube %.1f diameters long (%.4g mm across), less than the %.4g of a "
+                        "slender cable: kept as a solid part",
+                        slenderness, 2 * tube->radius, options_.min_tube_aspect);
+          drawing_->skipped.push_back(
+              "'" + (body_style.name.empty() ? std::string("unnamed") : body_style.name) + "': " + line);
+          tube.reset();
+        }
+      }
+      if (tube) {
         DrawnCable cable;
         cable.name = body_style.name;
         cable.centreline = ToPolyline(tube->centres);
         cable.diameter = 2 * tube->radius * kMetresPerOcctUnit;
+        cable.inner_diameter = 2 * tube->inner_radius * kMetresPerOcctUnit;
+        cable.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
         cable.source = CableSourceKind::kTube;
         cable.fit_error = tube->rms_residual * kMetresPerOcctUnit;
         SetColor(&cable, body_style.color);
@@ -210,12 +293,6 @@ class DrawingBuilder {
         drawing_->solids.push_back(std::move(solid));
       }
     }
-    if (cables.size() > 1) {  // one part holding several routes: keep the names apart
-      for (size_t i = 0; i < cables.size(); ++i) {
-        cables[i].name += '#';  // appended piecewise: GCC 12 -Wrestrict misfires on "#" + string
-        cables[i].name += std::to_string(i + 1);
-      }
-    }
     for (auto& c : cables) drawing_->cables.push_back(std::move(c));
   }
 
@@ -229,6 +306,60 @@ class DrawingBuilder {
   const CadReadOptions& options_;
   HarnessDrawing* drawing_;
 };
+
+// Distance from `p` to the segment a-b.
+double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// A straight hollow tube with another cable running through its bore is a duct, sleeve or
+// grommet the cable is held by, not a cable: it becomes a solid (and so a clip). A bent hollow
+// tube around other cables (a conduit over a bundle) stays a cable.
+void DemoteDucts(HarnessDrawing* drawing, double relative_deflection) {
+  std::vector<DrawnCable>& cables = drawing->cables;
+  std::vector<bool> duct(cables.size(), false);
+  for (size_t i = 0; i < cables.size(); ++i) {
+    const DrawnCable& tube = cables[i];
+    if (tube.inner_diameter <= 0 || !tube.shape || tube.centreline.size() < 2) continue;
+    const Vec3 a = tube.centreline.points.col(0);
+    const Vec3 b = tube.centreline.points.col(tube.centreline.size() - 1);
+    const double bore = 0.5 * tube.inner_diameter;
+    bool straight = true;
+    for (Eigen::Index k = 0; k < tube.centreline.points.cols() && straight; ++k) {
+      straight = SegmentDistance(tube.centreline.points.col(k), a, b) < 0.5 * bore;
+    }
+    if (!straight) continue;
+    for (size_t j = 0; j < cables.size() && !duct[i]; ++j) {
+      if (j == i) continue;
+      const Eigen::Matrix3Xd& p = cables[j].centreline.points;
+      for (Eigen::Index k = 0; k < p.cols(); ++k) {
+        const Vec3 q = p.col(k);
+        const double along = (q - a).dot((b - a).normalized());
+        if (along > 0 && along < (b - a).norm() && SegmentDistance(q, a, b) < bore) {
+          duct[i] = true;
+          break;
+        }
+      }
+    }
+  }
+  std::vector<DrawnCable> kept;
+  for (size_t i = 0; i < cables.size(); ++i) {
+    if (!duct[i]) {
+      kept.push_back(std::move(cables[i]));
+      continue;
+    }
+    DrawnSolid solid;
+    solid.name = cables[i].name;
+    solid.has_color = cables[i].has_color;
+    solid.color = cables[i].color;
+    solid.mesh = Tessellate(cables[i].shape->shape, relative_deflection);
+    solid.shape = cables[i].shape;
+    drawing->solids.push_back(std::move(solid));
+  }
+  cables = std::move(kept);
+}
 
 std::string StepLengthUnit(STEPCAFControl_Reader& reader) {
   TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
@@ -320,12 +451,16 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
   } catch (const Standard_Failure& e) {
     throw FileError(path, std::string("OCCT could not read the file: ") + e.GetMessageString());
   }
+  DemoteDucts(&drawing, options.mesh_relative_deflection);
+  NameCablesUniquely(&drawing);
   if (drawing.cables.empty() && drawing.solids.empty()) {
     throw FileError(path, "the file contains no shapes");
   }
   if (drawing.cables.empty()) {
-    throw FileError(path, "no cable curves or tube solids found (" +
-                              std::to_string(drawing.solids.size()) + " other solids)");
+    std::string why = "no cable curves or tube solids found (" +
+                      std::to_string(drawing.solids.size()) + " other solids)";
+    if (!drawing.skipped.empty()) why += "; " + drawing.skipped.front();
+    throw FileError(path, why);
   }
   FindJunctions(&drawing, options.junction_tolerance);
   return drawing;

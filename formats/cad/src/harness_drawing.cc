@@ -1,6 +1,9 @@
 #include "cablefit/formats/harness_drawing.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 #include "cablefit/formats/cad_file.h"
 
@@ -13,6 +16,55 @@ const char* ToString(CableSourceKind kind) {
     case CableSourceKind::kMesh: return "mesh";
   }
   return "unknown";
+}
+
+namespace {
+
+// The sort key of a cable: its two end points rounded to 1 um, the smaller one first.
+std::array<long long, 6> GeometricKey(const Polyline& centreline) {
+  std::array<long long, 6> key{};
+  if (centreline.size() < 1) return key;
+  auto rounded = [](const Vec3& p) {
+    return std::array<long long, 3>{std::llround(p.x() * 1e6), std::llround(p.y() * 1e6),
+                                    std::llround(p.z() * 1e6)};
+  };
+  std::array<long long, 3> a = rounded(centreline.points.col(0));
+  std::array<long long, 3> b = rounded(centreline.points.col(centreline.size() - 1));
+  if (b < a) std::swap(a, b);
+  std::copy(a.begin(), a.end(), key.begin());
+  std::copy(b.begin(), b.end(), key.begin() + 3);
+  return key;
+}
+
+}  // namespace
+
+void NameCablesUniquely(HarnessDrawing* drawing) {
+  std::vector<DrawnCable>& cables = drawing->cables;
+  std::vector<size_t> order(cables.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::vector<std::array<long long, 6>> keys;
+  for (const DrawnCable& c : cables) keys.push_back(GeometricKey(c.centreline));
+  // Ties (two cables with the same ends) keep the file's order.
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return keys[a] < keys[b]; });
+  std::map<std::string, int> uses;
+  for (const DrawnCable& c : cables) ++uses[c.name];
+  std::map<std::string, int> counter;
+  int unnamed = 0;
+  for (size_t i : order) {
+    std::string& name = cables[i].name;
+    if (name.empty()) {
+      name = "cable-" + std::to_string(++unnamed);
+    } else if (uses[name] > 1) {
+      const int k = ++counter[name];
+      name += '#';  // appended piecewise: GCC 12 -Wrestrict misfires on "#" + string
+      name += std::to_string(k);
+    }
+  }
+  int unnamed_solids = 0;
+  for (DrawnSolid& s : drawing->solids) {
+    if (s.name.empty()) s.name = "solid-" + std::to_string(++unnamed_solids);
+  }
 }
 
 void FindJunctions(HarnessDrawing* drawing, double tolerance) {

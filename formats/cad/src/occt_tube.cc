@@ -20,6 +20,12 @@
 namespace cablefit {
 namespace {
 
+// The swept surface's approximation: quintic B-spline pieces within a thousandth of the
+// diameter of the exact pipe (2 um on a 2 mm wire, far below any drawing's precision).
+constexpr int kTubeMaxDegree = 5;
+constexpr int kTubeMaxSegments = 2000;
+constexpr double kTubeRelativeTolerance = 1e-3;
+
 bool IsValidTube(const TopoDS_Shape& shape) {
   int faces = 0;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) ++faces;
@@ -74,6 +80,12 @@ TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
           shell.SetMode(/*IsFrenet=*/false);
         }
         shell.Add(profile);
+        // OCCT's defaults (degree 11, 30 segments) give surfaces whose poles stray far from the
+        // tube (hundreds of mm around a 16 mm cable), which other CAD systems and our own
+        // reader handle badly: quintic pieces, as many as the tolerance needs.
+        shell.SetMaxDegree(kTubeMaxDegree);
+        shell.SetMaxSegments(kTubeMaxSegments);
+        shell.SetTolerance(kTubeRelativeTolerance * diameter);
         shell.Build();
         if (shell.IsDone() && shell.MakeSolid() && IsValidTube(shell.Shape())) return shell.Shape();
       } catch (const Standard_Failure& e) {

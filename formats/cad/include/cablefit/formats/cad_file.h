@@ -14,9 +14,12 @@ struct CadReadOptions {
   /// Relative chordal deflection for tessellating other solids (fraction of their size).
   double mesh_relative_deflection = 0.01;
   /// A solid counts as a tube when its lateral (circular cross-section) faces are this fraction
-  /// of its area or more, and it is at least `min_tube_aspect` diameters long.
+  /// of its area or more, and it is at least `min_tube_aspect` diameters long. Ten diameters:
+  /// a rod model (bending, no shear, section shape kept) describes a piece only when it is
+  /// slender, and below that a piece barely bends under its own weight anyway. Shorter tubes
+  /// (end stubs, ferrules, screw shanks, sleeves) are kept as solids.
   double min_tube_area_fraction = 0.8;
-  double min_tube_aspect = 2.0;
+  double min_tube_aspect = 10.0;
   /// Cable ends closer than this [m] are recorded as one junction.
   double junction_tolerance = 1e-4;
   /// [s] Longest the crash probe of a STEP/IGES read (a helper process reading the file first,

@@ -35,12 +35,15 @@ struct DrawnCable {
   bool has_color = false;
   SrgbColor color;
   Polyline centreline;           ///< s from 0 [m], points 3 x n [m]
-  double diameter = 0.0;         ///< [m]; 0 when unknown (a bare curve)
+  double diameter = 0.0;         ///< [m] outer diameter; 0 when unknown (a bare curve)
+  double inner_diameter = 0.0;   ///< [m] bore of a hollow tube (hose, conduit); 0 when solid
   CableSourceKind source = CableSourceKind::kCurve;
   /// How far the recovered centreline may be from the true one [m]: for a curve, the largest
   /// chord deviation of the sampling; for a tube, the RMS residual of the cross-section circle
   /// fits (or of the surface distance to the tube for a mesh).
   double fit_error = 0.0;
+  /// The tube solid it was recovered from, when read from CAD (null for curves and meshes).
+  std::shared_ptr<const CadShapeHandle> shape;
 };
 
 /// A non-cable solid (clip, bracket): its shape is copied unchanged by the writer.
@@ -68,7 +71,16 @@ struct HarnessDrawing {
   std::vector<DrawnCable> cables;
   std::vector<DrawnSolid> solids;
   std::vector<CableJunction> junctions;
+  /// What was read but not taken as a cable, one line each with the reason ("'Profile': a
+  /// closed planar curve (a sketch profile), not a cable route").
+  std::vector<std::string> skipped;
 };
+
+/// Gives every cable a distinct name: an unnamed cable becomes "cable-<k>", a name used by
+/// several cables gets "#<k>" appended, k counting in the geometric order of the cables (by the
+/// lexicographically smaller of their end points, then the other end, coordinates rounded to
+/// 1 um), so names do not depend on the order of the file. Unnamed solids become "solid-<k>".
+void NameCablesUniquely(HarnessDrawing* drawing);
 
 /// Finds cable ends closer than `tolerance` [m] to each other and records them as junctions
 /// (only groups of two or more ends). Replaces `drawing->junctions`.
