@@ -10,7 +10,7 @@
 #include <cstring>
 #include <thread>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 
