@@ -1,4 +1,4 @@
-// The O(n) block elimination of the Newton system (core/src/kkt_ldlt.h) against
+// The O(n) block elimination of the Newton system (core/solver/src/kkt_ldlt.h) against
 // a dense solve of the same KKT matrix: step, multipliers and inertia, for a
 // single rod held by every kind of support, for a rod network with a breakout,
 // off equilibrium (indefinite Hessian) and with a shift; and its refusal of
