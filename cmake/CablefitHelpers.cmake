@@ -1,10 +1,14 @@
-# cablefit_library(NAME <target> ALIAS <ns::name> DIR <dir> [DEPS ...] [PRIVATE_DEPS ...])
-# One library per folder: sources are every src/*.cc, public headers live in include/.
-# Globbing keeps parallel work from colliding on hand-maintained source lists.
+# cablefit_library(NAME <target> ALIAS <ns::name> DIR <dir> SOURCES <src/x.cc ...>
+#                  [DEPS ...] [PRIVATE_DEPS ...])
+# One library per folder: public headers live in DIR/include, sources and private headers in
+# DIR/src. SOURCES are listed (relative to DIR) so the CMake file says what is built.
 function(cablefit_library)
-  cmake_parse_arguments(L "" "NAME;ALIAS;DIR" "DEPS;PRIVATE_DEPS" ${ARGN})
-  file(GLOB _srcs CONFIGURE_DEPENDS ${L_DIR}/src/*.cc)
-  add_library(${L_NAME} STATIC ${_srcs})
+  cmake_parse_arguments(L "" "NAME;ALIAS;DIR" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
+  if(NOT L_SOURCES)
+    message(FATAL_ERROR "cablefit_library(${L_NAME}): no SOURCES")
+  endif()
+  list(TRANSFORM L_SOURCES PREPEND ${L_DIR}/)
+  add_library(${L_NAME} STATIC ${L_SOURCES})
   add_library(${L_ALIAS} ALIAS ${L_NAME})
   # Position-independent so the FreeCAD workbench's Python module can link the same libraries.
   set_target_properties(${L_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
@@ -12,15 +16,14 @@ function(cablefit_library)
   target_link_libraries(${L_NAME} PUBLIC ${L_DEPS} PRIVATE ${L_PRIVATE_DEPS} cablefit_warnings)
 endfunction()
 
-# cablefit_test_dir(NAME <exe> DIR <dir> LIBS ...): every *_test.cc in DIR becomes part of one
-# GoogleTest executable registered with CTest test by test.
-function(cablefit_test_dir)
-  cmake_parse_arguments(T "" "NAME;DIR" "LIBS" ${ARGN})
-  file(GLOB _srcs CONFIGURE_DEPENDS ${T_DIR}/*_test.cc)
-  if(NOT _srcs)
-    return()
+# cablefit_test(NAME <exe> SOURCES <x_test.cc ...> LIBS ...): one GoogleTest executable of the
+# listed sources (relative to the calling folder), registered with CTest test by test.
+function(cablefit_test)
+  cmake_parse_arguments(T "" "NAME" "SOURCES;LIBS" ${ARGN})
+  if(NOT T_SOURCES)
+    message(FATAL_ERROR "cablefit_test(${T_NAME}): no SOURCES")
   endif()
-  add_executable(${T_NAME} ${_srcs})
+  add_executable(${T_NAME} ${T_SOURCES})
   target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} cablefit_test_support GTest::gtest_main cablefit_warnings)
   # One variable per property: gtest_discover_tests splits a ';'-list value into separate
   # arguments, which silently dropped the second variable of a single ENVIRONMENT list.

@@ -14,7 +14,7 @@
 
 #include <unistd.h>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit::fuzz {
 

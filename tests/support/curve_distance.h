@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit::testing {
 

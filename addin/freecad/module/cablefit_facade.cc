@@ -1,4 +1,4 @@
-// The facade over addin/src: the same read -> group -> relax -> write sequence as
+// The facade over addin/app: the same read -> group -> relax -> write sequence as
 // command_relax.cc (one input, groups in order, no worker pool: FreeCAD calls it from its GUI
 // thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
 #include "cablefit_facade.h"
@@ -7,18 +7,18 @@
 #include <exception>
 #include <filesystem>
 
-#include "cablefit/core/deadline.h"
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/colour_map.h"
-#include "diagnose_case.h"
-#include "diagnose_output.h"
-#include "harness_config.h"
-#include "relax_cable.h"
-#include "relax_file.h"
-#include "batch_pool.h"
-#include "relax_network.h"
-#include "relax_report.h"
-#include "report_case.h"
+#include "cablefit/app/diagnose_case.h"
+#include "cablefit/app/diagnose_output.h"
+#include "cablefit/app/harness_config.h"
+#include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_file.h"
+#include "cablefit/app/batch_pool.h"
+#include "cablefit/app/relax_network.h"
+#include "cablefit/app/relax_report.h"
+#include "cablefit/app/report_case.h"
 
 namespace cablefit::freecad {
 

@@ -1,7 +1,7 @@
 // The one C++ entry point of the FreeCAD workbench: relaxing the cables of a harness file and
 // diagnosing a recording case through exactly the functions `cablefit relax` and `cablefit
 // diagnose` call, returned as plain values. The Python module binds only this header, so a change
-// of the relax/diagnose internals (addin/src) touches cablefit_facade.cc alone.
+// of the relax/diagnose internals (addin/app) touches cablefit_facade.cc alone.
 #pragma once
 
 #include <array>
@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
-#include "cablefit/core/statics_solver.h"
+#include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/solver/statics_solver.h"
 
 namespace cablefit::freecad {
 

@@ -8,7 +8,7 @@
 
 #include <optional>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit_facade.h"
 
 namespace py = pybind11;

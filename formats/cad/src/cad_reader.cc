@@ -26,7 +26,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
 #include "cad_read_in_process.h"

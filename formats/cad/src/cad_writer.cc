@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
 #include "occt_session.h"

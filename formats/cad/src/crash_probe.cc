@@ -13,8 +13,8 @@
 #include <filesystem>
 #include <thread>
 
-#include "cablefit/core/deadline.h"
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
 
 extern char** environ;
 

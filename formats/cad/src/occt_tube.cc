@@ -15,7 +15,7 @@
 
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 namespace {

@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "crash_probe.h"
 #include "occt_tube.h"
 

@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <unistd.h>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "occt_session.h"
 
 namespace cablefit {

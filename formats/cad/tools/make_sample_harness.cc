@@ -34,7 +34,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "occt_session.h"
 #include "occt_tube.h"
 #include "xde_document.h"

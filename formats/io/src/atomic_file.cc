@@ -10,7 +10,7 @@
 #include <fstream>
 #include <random>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 namespace {

@@ -1,6 +1,6 @@
 #include "cablefit/formats/centerline_csv.h"
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/number_text.h"
 #include "csv_table.h"

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"
 

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cablefit/core/deadline.h"
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 

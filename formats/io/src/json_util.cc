@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"

@@ -15,8 +15,8 @@
 #include <sstream>
 #include <vector>
 
-#include "cablefit/core/deadline.h"
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"

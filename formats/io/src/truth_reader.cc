@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/json_util.h"
 
 namespace cablefit {

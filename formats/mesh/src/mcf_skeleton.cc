@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit {
 

@@ -10,7 +10,7 @@
 #include <map>
 #include <unistd.h>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/mesh_file.h"
 
 namespace cablefit {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/mesh_file.h"
 #include "mcf_skeleton.h"
 #include "skeleton_routes.h"

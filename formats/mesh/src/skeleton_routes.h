@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 #include "mcf_skeleton.h"
 
 namespace cablefit {

@@ -2,7 +2,7 @@
 // (rotation-minimising), so the tube does not twist; flat caps closed by a centre vertex.
 #include <cmath>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/mesh_file.h"
 
 namespace cablefit {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "font.h"
 #include "gl_scene.h"
 #include "view_overlays.h"

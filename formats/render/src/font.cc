@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit::render {
 namespace {

@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "osmesa_context.h"
 #include "tube_mesh.h"
 

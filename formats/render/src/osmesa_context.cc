@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit::render {
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "canvas.h"
 #include "font.h"
 #include "ticks.h"

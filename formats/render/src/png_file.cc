@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit {
 namespace {

@@ -8,8 +8,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "cablefit/core/deadline.h"
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
 #include "circle_fit.h"
 #include "point_index.h"
 #include "stretch.h"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <sstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 
 namespace cablefit::scan {
 namespace {

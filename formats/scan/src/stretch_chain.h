@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "cablefit/core/scan_centerline.h"
+#include "cablefit/core/diagnosis/scan_centerline.h"
 #include "cablefit/formats/scan_centerline_extractor.h"
 #include "stretch.h"
 

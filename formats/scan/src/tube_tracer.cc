@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cablefit/core/deadline.h"
+#include "cablefit/core/base/deadline.h"
 #include "circle_fit.h"
 
 namespace cablefit::scan {

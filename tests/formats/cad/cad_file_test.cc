@@ -9,7 +9,7 @@
 #include <map>
 #include <sstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "curve_distance.h"
 #include "test_support.h"
 

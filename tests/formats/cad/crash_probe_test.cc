@@ -9,7 +9,7 @@
 #include <csignal>
 #include <filesystem>
 
-#include "cablefit/core/deadline.h"
+#include "cablefit/core/base/deadline.h"
 
 namespace cablefit {
 namespace {

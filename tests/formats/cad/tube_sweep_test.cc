@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
 #include "curve_distance.h"
 #include "test_support.h"

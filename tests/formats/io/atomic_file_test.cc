@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "io_test_files.h"
 #include "test_support.h"
 

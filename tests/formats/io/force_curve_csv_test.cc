@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "io_test_files.h"
 #include "test_support.h"
 

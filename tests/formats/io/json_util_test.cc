@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "io_test_files.h"
 #include "test_support.h"
 

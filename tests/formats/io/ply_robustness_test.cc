@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "cablefit/core/deadline.h"
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/ply_reader.h"
 #include "io_test_files.h"
 #include "test_support.h"

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "curve_distance.h"
 #include "test_support.h"
 

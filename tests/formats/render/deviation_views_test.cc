@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/png_file.h"
 #include "synthetic_scene.h"
 #include "test_support.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/png_file.h"
 #include "test_support.h"
 

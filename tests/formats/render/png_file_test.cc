@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "test_support.h"
 
 namespace cablefit {

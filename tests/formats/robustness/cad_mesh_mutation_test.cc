@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/mesh_file.h"
 #include "test_support.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit::testing {
 

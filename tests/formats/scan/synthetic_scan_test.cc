@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "cablefit/core/errors.h"
+#include "cablefit/core/base/errors.h"
 #include "cablefit/formats/scan_centerline_extractor.h"
 #include "scan_test_data.h"
 #include "synthetic_tube_scan.h"

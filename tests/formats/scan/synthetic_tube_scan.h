@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit::testing {
 

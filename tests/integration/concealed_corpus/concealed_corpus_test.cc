@@ -12,8 +12,8 @@
 #include <map>
 #include <random>
 
-#include "cablefit/core/rod_simulation.h"
-#include "cablefit/core/shape_diagnosis.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/core/diagnosis/shape_diagnosis.h"
 #include "cablefit/formats/scan_centerline_extractor.h"
 #include "synthetic_tube_scan.h"
 #include "test_support.h"

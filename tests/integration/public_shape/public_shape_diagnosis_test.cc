@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cablefit/core/shape_diagnosis.h"
+#include "cablefit/core/diagnosis/shape_diagnosis.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/ply_reader.h"
 #include "cablefit/formats/scan_centerline_extractor.h"

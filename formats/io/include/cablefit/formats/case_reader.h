@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/core/errors.h"
-#include "cablefit/core/recording_case.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/rod/recording_case.h"
 
 namespace cablefit {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cablefit/core/recording_case.h"
+#include "cablefit/core/rod/recording_case.h"
 
 namespace cablefit {
 

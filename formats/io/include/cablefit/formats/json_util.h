@@ -8,7 +8,7 @@
 #include <set>
 #include <string>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit::json {
 

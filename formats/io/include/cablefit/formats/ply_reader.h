@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit {
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit {
 

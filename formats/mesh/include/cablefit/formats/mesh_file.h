@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit {
 

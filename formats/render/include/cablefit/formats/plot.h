@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "cablefit/core/recording_case.h"
+#include "cablefit/core/rod/recording_case.h"
 #include "cablefit/formats/image.h"
 
 namespace cablefit {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/core/geometry_types.h"
+#include "cablefit/core/base/geometry_types.h"
 #include "cablefit/formats/colour_map.h"
 #include "cablefit/formats/image.h"
 

@@ -10,9 +10,9 @@
 #include <optional>
 #include <string>
 
-#include "cablefit/core/geometry_types.h"
-#include "cablefit/core/rod_spec.h"
-#include "cablefit/core/scan_centerline.h"
+#include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/rod/rod_spec.h"
+#include "cablefit/core/diagnosis/scan_centerline.h"
 
 namespace cablefit {
 

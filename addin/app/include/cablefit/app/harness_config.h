@@ -1,0 +1,73 @@
+// harness.json (format "cablefit-harness/1"): the physics a CAD drawing does not carry, per
+// cable name, for `cablefit relax`. Every field is optional; what is missing is defaulted (and
+// the relax output says so). Format described in the relax command's README text.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cablefit/core/rod/rod_spec.h"
+
+namespace cablefit::addin {
+
+/// How a cable end is held: clamped at its drawn pose (the default), clipped, pinned or free.
+struct EndConfig {
+  bool free = false;  ///< no support at this end
+  SupportKind kind = SupportKind::kClamp;
+  bool sliding = false;  ///< free translation along the end tangent (clamp or clip)
+};
+
+/// An extra support, placed by arc length or by the point nearest on the drawn route.
+struct ExtraSupportConfig {
+  SupportKind kind = SupportKind::kClip;
+  std::optional<double> s;    ///< [m] arc length along the drawn route
+  std::optional<Vec3> point;  ///< [m] support position; s = nearest arc length
+  bool sliding = false;
+};
+
+/// What harness.json says about one cable (or the defaults for all cables).
+struct CableConfig {
+  /// Rod material without diameter; unset -> derived from the diameter (see relax_material.h).
+  std::optional<MaterialSpec> material;
+  std::string material_source;     ///< "harness.json", or the section file it came from
+  std::optional<double> diameter;  ///< [m] overrides the drawn diameter
+  std::optional<Vec3> gravity;     ///< [m/s^2]
+  std::optional<EndConfig> start, end;
+  std::vector<ExtraSupportConfig> supports;
+  std::optional<bool> auto_clips;  ///< add a clip where the route passes a solid (default on)
+};
+
+/// A breakout or splice declared in harness.json: the listed cable ends are joined (whether or
+/// not the drawing puts them together; they are expected to meet).
+struct JunctionConfig {
+  std::string name;
+  struct End {
+    std::string cable;
+    bool at_start = true;
+  };
+  std::vector<End> ends;     ///< two or more
+  double compliance = 0.0;   ///< [rad/(N m)] of every branch attachment, 0 = rigid
+  double mass = 0.0;         ///< [kg]
+};
+
+struct HarnessConfig {
+  std::string path;                           ///< empty when no --config was given
+  Vec3 gravity = Vec3(0, 0, -9.81);           ///< [m/s^2] model frame of the CAD file
+  double min_bend_radius_factor = 5.0;        ///< flag bends tighter than this many diameters
+  CableConfig defaults;                       ///< "default": applies to every cable
+  std::map<std::string, CableConfig> cables;  ///< by cable name
+  std::vector<JunctionConfig> junctions;      ///< declared junctions
+  /// Applied to junctions found in the drawing (ends of 3+ cables meeting).
+  double junction_compliance = 0.0;  ///< [rad/(N m)]
+  double junction_mass = 0.0;        ///< [kg]
+
+  /// `defaults` overlaid with the entry for `name` (if any).
+  CableConfig For(const std::string& name) const;
+};
+
+/// Reads and validates harness.json. Throws FileError naming the file and field.
+HarnessConfig ReadHarnessConfig(const std::string& path);
+
+}  // namespace cablefit::addin

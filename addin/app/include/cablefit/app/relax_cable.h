@@ -1,0 +1,87 @@
+// One cable of a harness drawing relaxed under gravity: its rod set-up (material, supports at
+// their drawn poses, clips from the solids it passes through, harness.json), the solve from the
+// drawn shape (nearest equilibrium), and what the relax output reports about it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/formats/harness_drawing.h"
+#include "cablefit/formats/json_util.h"
+#include "cablefit/app/harness_config.h"
+#include "cablefit/app/relax_clips.h"
+
+namespace cablefit::addin {
+
+/// Effective Young's modulus of a PVC-insulated stranded copper bundle treated as a solid disc
+/// [Pa]: the strands slip (free-slip copper adds little) and plasticised PVC is 20-200 MPa at
+/// room temperature; measured bundles of automotive wires fall around 50-100 MPa. Mid value.
+inline constexpr double kDefaultBundleModulus = 75e6;
+/// Mass density of such a bundle over its whole disc [kg/m^3]: copper (8930) at ~10-15 %
+/// fill plus PVC (1400) and voids.
+inline constexpr double kDefaultBundleDensity = 2000.0;
+/// Diameter assumed for a bare curve without one in harness.json [m].
+inline constexpr double kDefaultDiameter = 0.008;
+
+/// EI = E pi d^4 / 64, GJ = EI / 1.3 (G = E / 2.6, nu ~ 0.3), mass = rho pi d^2 / 4.
+MaterialSpec DefaultBundleMaterial(double diameter);  // diameter [m]
+
+/// The rod set-up of one drawn cable.
+struct CableSetup {
+  int cable = 0;  ///< index into HarnessDrawing::cables
+  std::string name;
+  Polyline route;  ///< drawn route, s by chords from 0 [m]
+  RodSpec spec;
+  bool diameter_defaulted = false;
+  bool material_defaulted = false;
+  std::string material_source;  ///< "default bundle estimate", harness.json, section file
+  std::vector<std::string>
+      support_origin;    ///< per spec support: "start", "end", "harness.json", "clip <solid>"
+  std::string junction;  ///< non-empty when an end meets 2+ other cables
+  std::vector<std::string> notes;  ///< assumptions, one sentence each
+};
+
+/// Which ends of a cable are attached to a junction of a network (they get no end support).
+struct JunctionEnds {
+  bool start = false, end = false;
+  std::string description;  ///< what the relax output says about it
+};
+
+/// Builds the set-up. `boxes` are the bounding boxes of `drawing.solids` (same order).
+/// Throws InvalidInput (one line, without the file name) when no valid set-up exists.
+CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
+                      const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                      const JunctionEnds& junction_ends = {});
+
+/// The solved cable and its measures.
+struct CableRelaxation {
+  CableSetup setup;
+  SimulationResult result;
+  Polyline relaxed;                ///< uniformly sampled solution, s [m], points 3 x n [m]
+  Eigen::VectorXd deviation;       ///< n [m] distance of each relaxed sample to the drawn route
+  double max_deviation = 0.0;      ///< [m]
+  double rms_deviation = 0.0;      ///< [m]
+  double max_deviation_s = 0.0;    ///< [m]
+  double min_bend_radius = 0.0;    ///< [m] (infinity when straight)
+  double min_bend_radius_s = 0.0;  ///< [m]
+  bool bend_flag = false;          ///< min bend radius < factor * diameter
+  double bend_limit = 0.0;         ///< [m] factor * diameter
+  double seconds = 0.0;
+  bool ok() const { return result.converged; }
+};
+
+/// Solves the set-up starting from the drawn route and measures the result.
+CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
+                           double min_bend_radius_factor);
+
+/// Fills relaxed, deviation and bend radius from `r->result` (its centreline and frames).
+void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* r);
+
+/// Samples along a relaxed cable for output (at least 201, about one per millimetre up to 2001).
+int OutputSamples(double length);  // length [m]
+
+/// The per-cable object of `<stem>.json`.
+json::Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn);
+
+}  // namespace cablefit::addin

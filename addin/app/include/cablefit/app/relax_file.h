@@ -1,0 +1,61 @@
+// One input of `cablefit relax`: reading a CAD file or mesh into a HarnessDrawing, the relaxed
+// cables, and the per-input outputs <stem>.step and <stem>.json.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cablefit/formats/harness_drawing.h"
+#include "cablefit/formats/json_util.h"
+#include "cablefit/app/relax_cable.h"
+
+namespace cablefit::addin {
+
+/// True for extensions read by ReadCadFile (step, stp, iges, igs; any case).
+bool IsCadPath(const std::string& path);
+/// True for the mesh extensions `relax` accepts (stl, obj, ply, gltf, glb, 3mf, off, dae, fbx).
+bool IsMeshPath(const std::string& path);
+
+/// Length of one unit of `name` in metres ("mm" -> 0.001, "m", "cm", "in"/"inch", "ft").
+/// Throws InvalidInput for an unknown unit.
+double UnitInMetres(const std::string& name);
+
+/// Reads a CAD file (ReadCadFile) or a mesh (ReadMeshFile, tubes named "<stem>#k", junctions
+/// between tube ends closer than a quarter of the smaller diameter). Throws FileError.
+HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit);
+
+/// Per-stage wall times of one input [s].
+struct StageTimes {
+  double read = 0, relax = 0, step = 0, json = 0, picture = 0;
+};
+
+/// Everything known about one input after the run.
+struct RelaxedFile {
+  std::string input;  ///< path as found
+  std::string stem;   ///< output file stem (unique in the run)
+  HarnessDrawing drawing;
+  std::vector<std::optional<CableRelaxation>> cables;  ///< per drawn cable; empty when it failed
+  std::vector<std::string> cable_errors;               ///< per drawn cable; empty when it succeeded
+  std::string error;  ///< the file's one-line problem (without the path); empty if none
+  bool read_ok = false;
+  StageTimes times;
+  std::string picture;                 ///< PNG file name next to the outputs, empty if none
+  std::vector<std::string> close_ups;  ///< per cable PNG names (--close-ups), else empty
+  std::vector<json::Json> networks;    ///< per network group: junction loads, contacts
+};
+
+/// The diameter `cable` is drawn with in the output: relaxed set-up's, else harness.json's or
+/// the drawn one, else the default.
+double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& config);
+
+/// Writes DIR/<stem>.step: relaxed cables resampled to about two points per diameter (retried
+/// sparser if the sweep fails), failed ones as drawn so names and count are kept,
+/// and the drawing's solids.
+void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
+                          const HarnessConfig& config);
+
+/// The `cablefit-relax/1` object of DIR/<stem>.json.
+json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config);
+
+}  // namespace cablefit::addin

@@ -1,0 +1,70 @@
+// Which cables of a drawing `relax` solves together, and the solve of such a group as one rod
+// network: cables joined at a breakout (three or more ends meeting in the drawing, or a junction
+// declared in harness.json) form one network; a cable near a solid it does not pass through is
+// solved with contact against it (the network solver, with one branch).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/formats/harness_drawing.h"
+#include "cablefit/formats/json_util.h"
+#include "cablefit/app/harness_config.h"
+#include "cablefit/app/relax_cable.h"
+
+namespace cablefit::addin {
+
+struct RelaxGroup {
+  std::vector<int> cables;  ///< drawing cable indices
+  struct Junction {
+    std::string name;
+    std::vector<CableJunction::End> ends;
+    double compliance = 0.0;  // [rad/(N m)]
+    double mass = 0.0;        // [kg]
+    bool declared = false;    // from harness.json (else found in the drawing)
+  };
+  std::vector<Junction> junctions;
+  std::vector<int> obstacles;  ///< drawing solids the group must stay out of
+  /// Solved by the network solver (junctions or contact), else as a single rod.
+  bool network() const { return !junctions.empty() || !obstacles.empty(); }
+};
+
+/// Groups the drawing's cables. `boxes` are the solids' bounding boxes. Throws InvalidInput
+/// when a declared junction names a cable the drawing does not have.
+std::vector<RelaxGroup> GroupCables(const HarnessDrawing& drawing,
+                                    const std::vector<OrientedBox>& boxes,
+                                    const HarnessConfig& config);
+
+/// A solved network group: one relaxation per group cable (same order) and the group's JSON
+/// (junction loads, contacts, solver figures).
+struct GroupRelaxation {
+  std::vector<CableRelaxation> cables;
+  json::Json json;
+};
+
+/// Solves a network group from the drawn routes (two resolutions, Richardson-extrapolated).
+/// Throws InvalidInput for an invalid set-up; a solver failure is reported per cable.
+GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,
+                                  const std::vector<OrientedBox>& boxes,
+                                  const HarnessConfig& config, const SimulationOptions& options);
+
+/// One box per drawing solid, in order (empty for a solid without tessellation): what
+/// SetUpCable and GroupCables take.
+std::vector<OrientedBox> SolidBoxes(const HarnessDrawing& drawing);
+
+/// One group relaxed, the way `cablefit relax` and the CAD add-in both do it: the network solve
+/// or the single-rod one. On failure `problem` is one line (exception or non-convergence) and
+/// `cables` must not be used; `network` is the group's JSON (null for a single rod).
+struct GroupOutcome {
+  std::vector<CableRelaxation> cables;
+  json::Json network;
+  std::string problem;
+};
+GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& group,
+                              const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                              const SimulationOptions& options);
+
+/// A one-line label of a group: its cable names, comma separated.
+std::string GroupLabel(const HarnessDrawing& drawing, const RelaxGroup& group);
+
+}  // namespace cablefit::addin

@@ -1,0 +1,214 @@
+#include "cablefit/app/diagnose_case.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <filesystem>
+
+#include "cablefit/core/base/errors.h"
+#include "cablefit/formats/case_reader.h"
+#include "cablefit/formats/centerline_csv.h"
+#include "cablefit/formats/force_curve_csv.h"
+#include "cablefit/formats/ply_reader.h"
+#include "cablefit/formats/scan_centerline_extractor.h"
+#include "diagnose_observation.h"
+
+namespace cablefit::addin {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Forwards progress of one stage, mapped onto [begin, end] of the whole case.
+ProgressCallback Stage(const ProgressCallback& progress, double begin, double end) {
+  if (!progress) return {};
+  return [progress, begin, end](double f, const std::string& stage) {
+    return progress(begin + (end - begin) * std::clamp(f, 0.0, 1.0), stage);
+  };
+}
+
+void Report(const ProgressCallback& progress, double f, const std::string& stage) {
+  if (progress) progress(f, stage);
+}
+
+/// Runs `fn`, turning a bare InvalidInput (no file in it) into a FileError naming `file`.
+template <typename Fn>
+auto Blame(const std::string& file, Fn&& fn) {
+  try {
+    return fn();
+  } catch (const FileError&) {
+    throw;
+  } catch (const InvalidInput& e) {
+    throw FileError(file, e.what());
+  }
+}
+
+std::string FormatMicrons(double metres) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.1f \u00b5m", metres * 1e6);
+  return buf;
+}
+
+Eigen::Matrix3Xd SubSample(const Eigen::Matrix3Xd& points, int max_points) {
+  const Eigen::Index n = points.cols();
+  if (n <= max_points || max_points <= 0) return points;
+  Eigen::Matrix3Xd out(3, max_points);
+  for (int i = 0; i < max_points; ++i)
+    out.col(i) = points.col(static_cast<Eigen::Index>(static_cast<double>(i) * n / max_points));
+  return out;
+}
+
+void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallback& progress,
+                       DiagnosedCase* out) {
+  const RecordingCase& rc = out->recording;
+  const RecordingRef* scan_ref = nullptr;
+  const RecordingRef* line_ref = nullptr;
+  for (const RecordingRef& r : rc.recordings) {
+    if (r.kind == RecordingKind::kScan && !scan_ref) scan_ref = &r;
+    if (r.kind == RecordingKind::kCenterline && !line_ref) line_ref = &r;
+  }
+  Report(progress, 0.01, "reading");
+  PointCloud cloud;
+  if (scan_ref) {
+    cloud = ReadPly(scan_ref->path);
+    out->scan_points = SubSample(cloud.points, options.max_picture_points);
+  }
+  // With both a scan and a measured centreline, the fit uses the one that carries more
+  // information about the shape: the larger (number of centre points) / sigma^2. A scan that
+  // cannot be traced then only shows in the pictures.
+  std::optional<ShapeObservation> from_line;
+  if (line_ref) {
+    const Polyline line = ReadCenterlineCsv(line_ref->path);
+    if (line.size() < 3) throw FileError(line_ref->path, "needs at least 3 points");
+    from_line = ObservationFromCenterline(line, rc.nominal.length);
+  }
+  std::optional<ScanCenterline> scan;
+  if (scan_ref) {
+    Report(progress, 0.05, "scan centreline");
+    ScanCenterlineOptions so;
+    so.diameter = rc.nominal.material.diameter;
+    try {
+      scan = Blame(scan_ref->path, [&] {
+        return ExtractScanCenterline(cloud, so, ScanGuide::FromRodSpec(rc.nominal));
+      });
+      if (scan->size() < 3) throw FileError(scan_ref->path, "too few cable centres recovered");
+    } catch (const FileError& e) {
+      if (!from_line) throw;
+      out->notes.push_back(std::string(e.what()) + "; the centre line is used instead");
+      scan.reset();
+    }
+  }
+  const auto information = [](const ShapeObservation& o) {
+    return static_cast<double>(o.points.cols()) / (o.noise_sigma * o.noise_sigma);
+  };
+  std::optional<ShapeObservation> from_scan;
+  if (scan) from_scan = ObservationFromScan(*scan);
+  if (from_scan && (!from_line || information(*from_scan) > information(*from_line))) {
+    out->observation = std::move(*from_scan);
+    out->observation_source = scan_ref->file;
+    for (const std::string& w : scan->warnings) out->notes.push_back(scan_ref->file + ": " + w);
+    if (from_line)
+      out->notes.push_back("fitted to the scan (" + std::to_string(scan->size()) +
+                           " centres, noise " + FormatMicrons(out->observation.noise_sigma) +
+                           ") rather than " + line_ref->file + " (" +
+                           std::to_string(from_line->points.cols()) + " points, noise " +
+                           FormatMicrons(from_line->noise_sigma) + "): it carries more information");
+    out->scan = std::move(scan);
+  } else {
+    out->observation = std::move(*from_line);
+    out->observation_source = line_ref->file;
+  }
+  ShapeDiagnosisOptions so = options.shape;
+  so.progress = Stage(progress, 0.15, 1.0);
+  ShapeDiagnosis d =
+      Blame(rc.case_file, [&] { return DiagnoseShape(rc.nominal, out->observation, so); });
+  out->effect = d.effect;
+  out->confidence = d.confidence;
+  out->interval = d.interval;
+  out->clamp = d.clamp;
+  out->parameters = d.parameters;
+  out->vectors = d.vectors;
+  out->baseline = {d.baseline_max, d.baseline_rms};
+  out->fitted = {d.fitted_max, d.fitted_rms};
+  out->deviation_unit = "m";
+  out->explanation = d.explanation;
+  for (const EffectCandidate& c : d.candidates) out->candidates.emplace_back(c.effect, c.score);
+  out->shape = std::move(d);
+}
+
+ForceCurve WithY(const ForceCurve& recorded, const Eigen::VectorXd& y) {
+  ForceCurve c = recorded;
+  c.y = y;
+  return c;
+}
+
+void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallback& progress,
+                       DiagnosedCase* out) {
+  const RecordingCase& rc = out->recording;
+  std::vector<const RecordingRef*> refs;
+  for (const RecordingRef& r : rc.recordings)
+    if (r.kind == RecordingKind::kForceCurve) refs.push_back(&r);
+  std::vector<ForceCurve> recorded;
+  std::vector<ForceDiagnosis> each;
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const RecordingRef& r = *refs[i];
+    Report(progress, 0.05 + 0.85 * static_cast<double>(i) / refs.size(), "fitting " + r.file);
+    recorded.push_back(ReadForceCurveCsv(r.path));
+    each.push_back(Blame(r.path, [&] {
+      return DiagnoseForceCurve(rc.nominal, r.test, recorded.back(), options.force, r.file);
+    }));
+  }
+  const ForceCaseDiagnosis all = Blame(rc.case_file, [&] { return CombineForceDiagnoses(each); });
+  out->effect = ToString(all.effect);
+  out->confidence = all.confidence;
+  // The effect acts on the whole cable; none has no interval (as the reference writes it).
+  if (all.effect != ForceEffect::kNone) out->interval = std::make_pair(0.0, rc.nominal.length);
+  out->parameters = all.parameters;
+  out->baseline = {all.baseline.max_deviation, all.baseline.rms_deviation};
+  out->fitted = {all.fitted.max_deviation, all.fitted.rms_deviation};
+  out->deviation_unit = all.curves.front().y_unit;
+  for (const ForceDiagnosis& d : all.curves)
+    if (d.y_unit != out->deviation_unit) out->deviation_unit = "curve units";
+  out->explanation = all.explanation;
+  for (const auto& [effect, score] : all.candidates) out->candidates.emplace_back(ToString(effect), score);
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    DiagnosedCurve c;
+    c.file = refs[i]->file;
+    c.path = refs[i]->path;
+    c.recorded = recorded[i];
+    c.diagnosis = all.curves[i];
+    c.nominal = WithY(recorded[i], c.diagnosis.nominal_curve);
+    c.fitted = WithY(recorded[i], c.diagnosis.fitted_curve);
+    out->curves.push_back(std::move(c));
+  }
+}
+
+}  // namespace
+
+const char* ToString(CaseKind kind) { return kind == CaseKind::kForce ? "force" : "shape"; }
+
+DiagnosedCase DiagnoseCase(const std::string& case_file, const DiagnoseCaseOptions& options,
+                           const ProgressCallback& progress) {
+  const auto start = Clock::now();
+  DiagnosedCase out;
+  out.recording = ReadRecordingCase(case_file);
+  bool has_shape = false, has_force = false;
+  for (const RecordingRef& r : out.recording.recordings) {
+    has_shape = has_shape || r.kind != RecordingKind::kForceCurve;
+    has_force = has_force || r.kind == RecordingKind::kForceCurve;
+  }
+  if (!has_shape && !has_force) throw FileError(out.recording.case_file, "has no recordings");
+  // One diagnosis.json holds one effect: a shape recording decides when both kinds are present.
+  out.kind = has_shape ? CaseKind::kShape : CaseKind::kForce;
+  if (has_shape && has_force)
+    out.notes.push_back("force curves were not used: the case also has a shape recording");
+  if (out.kind == CaseKind::kShape)
+    DiagnoseShapeCase(options, progress, &out);
+  else
+    DiagnoseForceCase(options, progress, &out);
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  Report(progress, 1.0, "done");
+  return out;
+}
+
+}  // namespace cablefit::addin

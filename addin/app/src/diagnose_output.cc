@@ -1,0 +1,78 @@
+#include "cablefit/app/diagnose_output.h"
+
+#include <filesystem>
+
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/formats/centerline_csv.h"
+#include "cablefit/formats/force_curve_csv.h"
+#include "cablefit/formats/json_util.h"
+
+namespace cablefit::addin {
+namespace {
+
+nlohmann::json DeviationJson(const Deviation& d) {
+  return {{"max_deviation", json::NumberOrNull(d.max)},
+          {"rms_deviation", json::NumberOrNull(d.rms)}};
+}
+
+}  // namespace
+
+nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
+  nlohmann::json parameters = nlohmann::json::object();
+  for (const auto& [name, value] : d.parameters) parameters[name] = json::NumberOrNull(value);
+  for (const auto& [name, v] : d.vectors) parameters[name] = json::ToJson(v);
+  nlohmann::json candidates = nlohmann::json::array();
+  for (const auto& [effect, score] : d.candidates)
+    candidates.push_back({{"effect", effect}, {"score", json::NumberOrNull(score)}});
+  nlohmann::json j;
+  j["format"] = kDiagnosisFormat;
+  j["case"] = d.recording.name;
+  j["effect"] = d.effect;
+  j["confidence"] = json::NumberOrNull(d.confidence);
+  j["interval"] = d.interval ? nlohmann::json::array({d.interval->first, d.interval->second})
+                             : nlohmann::json(nullptr);
+  j["clamp"] = d.clamp ? nlohmann::json(*d.clamp) : nlohmann::json(nullptr);
+  j["parameters"] = std::move(parameters);
+  j["baseline"] = DeviationJson(d.baseline);
+  j["fitted"] = DeviationJson(d.fitted);
+  j["explanation"] = d.explanation;
+  j["candidates"] = std::move(candidates);
+  return j;
+}
+
+std::vector<ModelCurveFile> ModelCurveFiles(const DiagnosedCase& d) {
+  std::vector<ModelCurveFile> files;
+  if (d.kind == CaseKind::kShape || d.curves.size() == 1) {
+    const std::string rec = d.kind == CaseKind::kForce ? d.curves.front().file : "";
+    files.push_back({"nominal.csv", "nominal", rec});
+    files.push_back({"fitted.csv", "fitted", rec});
+    return files;
+  }
+  for (const DiagnosedCurve& c : d.curves) {
+    const std::string leaf = std::filesystem::path(c.file).filename().string();
+    files.push_back({"nominal-" + leaf, "nominal", c.file});
+    files.push_back({"fitted-" + leaf, "fitted", c.file});
+  }
+  return files;
+}
+
+void WriteDiagnosisFiles(const std::string& dir, const DiagnosedCase& d) {
+  const std::filesystem::path folder(dir);
+  json::WriteJsonFile((folder / "diagnosis.json").string(), DiagnosisToJson(d));
+  if (d.kind == CaseKind::kShape) {
+    const Eigen::VectorXd s = UniformArcLengths(d.recording.nominal.length, kCenterlineRows);
+    WriteCenterlineCsv((folder / "nominal.csv").string(),
+                       SampleCenterline(d.shape->nominal_solution.centerline, s));
+    WriteCenterlineCsv((folder / "fitted.csv").string(),
+                       SampleCenterline(d.shape->fitted_solution.centerline, s));
+    return;
+  }
+  for (const ModelCurveFile& f : ModelCurveFiles(d)) {
+    for (const DiagnosedCurve& c : d.curves) {
+      if (c.file != f.recording) continue;
+      WriteForceCurveCsv((folder / f.name).string(), f.model == "nominal" ? c.nominal : c.fitted);
+    }
+  }
+}
+
+}  // namespace cablefit::addin

@@ -1,0 +1,204 @@
+#include "cablefit/app/harness_config.h"
+
+#include <filesystem>
+#include <set>
+
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/section/section.h"
+#include "cablefit/formats/json_util.h"
+#include "cablefit/app/section_json.h"
+
+namespace cablefit::addin {
+namespace {
+
+using json::FieldReader;
+using json::Json;
+
+using json::RequireKnownKeys;
+
+bool OptionalBool(const FieldReader& r, const std::string& key, bool fallback) {
+  if (!r.Has(key)) return fallback;
+  const Json& v = r.object().at(key);
+  if (!v.is_boolean()) r.Fail(key, "must be true or false, got " + json::Describe(v));
+  return v.get<bool>();
+}
+
+SupportKind ReadKind(const FieldReader& r, const std::string& key) {
+  const std::string text = r.RequireString(key);
+  try {
+    return SupportKindFromString(text);
+  } catch (const InvalidInput&) {
+    r.Fail(key, "must be \"clamp\", \"clip\" or \"pin\", got \"" + text + "\"");
+  }
+}
+
+// "clamp" | "clip" | "pin" | "free" | {"kind": ..., "sliding": bool}.
+EndConfig ReadEnd(const FieldReader& parent, const std::string& key) {
+  const Json& v = parent.object().at(key);
+  EndConfig end;
+  if (v.is_string()) {
+    if (v.get<std::string>() == "free") {
+      end.free = true;
+      return end;
+    }
+    end.kind = ReadKind(parent, key);
+    return end;
+  }
+  if (!v.is_object()) {
+    parent.Fail(key, "must be \"clamp\", \"clip\", \"pin\", \"free\" or {\"kind\", \"sliding\"}");
+  }
+  const FieldReader r = parent.Child(key);
+  RequireKnownKeys(r, {"kind", "sliding"});
+  if (r.Has("kind") && r.RequireString("kind") == "free") {
+    end.free = true;
+  } else if (r.Has("kind")) {
+    end.kind = ReadKind(r, "kind");
+  }
+  end.sliding = OptionalBool(r, "sliding", false);
+  if (end.sliding && (end.free || end.kind == SupportKind::kPin)) {
+    r.Fail("sliding", "only a clamp or clip can slide");
+  }
+  return end;
+}
+
+ExtraSupportConfig ReadSupport(const FieldReader& r) {
+  RequireKnownKeys(r, {"kind", "s", "point", "sliding"});
+  ExtraSupportConfig sp;
+  sp.kind = r.Has("kind") ? ReadKind(r, "kind") : SupportKind::kClip;
+  if (r.Has("s") == r.Has("point")) r.FailHere("needs exactly one of \"s\" or \"point\"");
+  if (r.Has("s")) sp.s = r.RequireNonNegative("s");
+  if (r.Has("point")) sp.point = r.RequireVec3("point");
+  sp.sliding = OptionalBool(r, "sliding", false);
+  if (sp.sliding && sp.kind == SupportKind::kPin) r.Fail("sliding", "a pin cannot slide");
+  return sp;
+}
+
+// {"bending_stiffness", "torsional_stiffness", "linear_density"} or {"section": SECTION.json}.
+void ReadMaterial(const FieldReader& r, CableConfig* c) {
+  if (r.Has("section")) {
+    RequireKnownKeys(r, {"section"});
+    std::filesystem::path p = r.RequireString("section");
+    if (p.is_relative()) p = std::filesystem::path(r.file()).parent_path() / p;
+    const SectionInput in = ReadSectionFile(p.lexically_normal().string());
+    MaterialSpec m = SectionToMaterial(ComputeSection(in.spec, in.torsion));
+    c->diameter = c->diameter.value_or(m.diameter);
+    m.diameter = 0.0;
+    c->material = m;
+    c->material_source = p.lexically_normal().string();
+    return;
+  }
+  RequireKnownKeys(r, {"bending_stiffness", "torsional_stiffness", "linear_density", "note"});
+  MaterialSpec m;
+  m.bending_stiffness = r.RequirePositive("bending_stiffness");
+  m.torsional_stiffness = r.RequirePositive("torsional_stiffness");
+  m.linear_density = r.RequireNonNegative("linear_density");
+  c->material = m;
+  c->material_source = r.file();
+}
+
+CableConfig ReadCable(const FieldReader& r, bool is_default) {
+  std::set<std::string> keys = {"material", "diameter",   "gravity", "start",
+                                "end",      "auto_clips", "note"};
+  if (!is_default) keys.insert("supports");
+  RequireKnownKeys(r, keys);
+  CableConfig c;
+  if (r.Has("diameter")) c.diameter = r.RequirePositive("diameter");
+  if (r.Has("material")) ReadMaterial(r.Child("material"), &c);
+  if (r.Has("gravity")) c.gravity = r.RequireVec3("gravity");
+  if (r.Has("start")) c.start = ReadEnd(r, "start");
+  if (r.Has("end")) c.end = ReadEnd(r, "end");
+  if (r.Has("auto_clips")) c.auto_clips = OptionalBool(r, "auto_clips", true);
+  if (r.Has("supports")) {
+    const Json& list = r.RequireArray("supports");
+    for (size_t i = 0; i < list.size(); ++i) {
+      c.supports.push_back(ReadSupport(
+          FieldReader(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "supports"), i))));
+    }
+  }
+  return c;
+}
+
+JunctionConfig ReadJunction(const FieldReader& r, int index) {
+  RequireKnownKeys(r, {"name", "ends", "compliance", "mass", "note"});
+  JunctionConfig j;
+  j.name = r.Has("name") ? r.RequireString("name") : "junction " + std::to_string(index + 1);
+  const Json& ends = r.RequireArray("ends");
+  if (ends.size() < 2) r.Fail("ends", "a junction joins two or more cable ends");
+  for (size_t i = 0; i < ends.size(); ++i) {
+    const FieldReader e(ends[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "ends"), i));
+    RequireKnownKeys(e, {"cable", "end"});
+    JunctionConfig::End end;
+    end.cable = e.RequireString("cable");
+    const std::string which = e.RequireString("end");
+    if (which != "start" && which != "end") e.Fail("end", "must be \"start\" or \"end\"");
+    end.at_start = which == "start";
+    j.ends.push_back(end);
+  }
+  if (r.Has("compliance")) j.compliance = r.RequireNonNegative("compliance");
+  if (r.Has("mass")) j.mass = r.RequireNonNegative("mass");
+  return j;
+}
+
+template <typename T>
+void Overlay(std::optional<T>* base, const std::optional<T>& top) {
+  if (top) *base = top;
+}
+
+}  // namespace
+
+CableConfig HarnessConfig::For(const std::string& name) const {
+  CableConfig c = defaults;
+  const auto it = cables.find(name);
+  if (it == cables.end()) return c;
+  const CableConfig& top = it->second;
+  if (top.material) {
+    c.material = top.material;
+    c.material_source = top.material_source;
+  }
+  Overlay(&c.diameter, top.diameter);
+  Overlay(&c.gravity, top.gravity);
+  Overlay(&c.start, top.start);
+  Overlay(&c.end, top.end);
+  Overlay(&c.auto_clips, top.auto_clips);
+  c.supports = top.supports;
+  return c;
+}
+
+HarnessConfig ReadHarnessConfig(const std::string& path) {
+  const Json root = json::ReadJsonFile(path);
+  if (!root.is_object()) throw FileError(path, "must hold a JSON object");
+  const FieldReader r(root, path);
+  RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
+                       "junctions", "junction_defaults", "note"});
+  if (r.Has("format") && r.RequireString("format") != "cablefit-harness/1") {
+    r.Fail("format", "must be \"cablefit-harness/1\"");
+  }
+  HarnessConfig h;
+  h.path = path;
+  if (r.Has("gravity")) h.gravity = r.RequireVec3("gravity");
+  if (r.Has("min_bend_radius_factor")) {
+    h.min_bend_radius_factor = r.RequirePositive("min_bend_radius_factor");
+  }
+  if (r.Has("junctions")) {
+    const Json& list = r.RequireArray("junctions");
+    for (size_t i = 0; i < list.size(); ++i)
+      h.junctions.push_back(ReadJunction(
+          FieldReader(list[i], path, json::IndexKey("junctions", i)), static_cast<int>(i)));
+  }
+  if (r.Has("junction_defaults")) {
+    const FieldReader d = r.Child("junction_defaults");
+    RequireKnownKeys(d, {"compliance", "mass", "note"});
+    if (d.Has("compliance")) h.junction_compliance = d.RequireNonNegative("compliance");
+    if (d.Has("mass")) h.junction_mass = d.RequireNonNegative("mass");
+  }
+  if (r.Has("default")) h.defaults = ReadCable(r.Child("default"), /*is_default=*/true);
+  if (r.Has("cables")) {
+    const FieldReader cables = r.Child("cables");
+    for (auto it = cables.object().begin(); it != cables.object().end(); ++it) {
+      h.cables[it.key()] = ReadCable(cables.Child(it.key()), /*is_default=*/false);
+    }
+  }
+  return h;
+}
+
+}  // namespace cablefit::addin

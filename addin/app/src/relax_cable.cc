@@ -1,0 +1,304 @@
+#include "cablefit/app/relax_cable.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "cablefit/core/base/errors.h"
+#include "relax_route.h"
+
+namespace cablefit::addin {
+namespace {
+
+using json::Json;
+using json::NumberOrNull;
+using json::ToJson;
+
+std::string Metres(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g m", v);
+  return buf;
+}
+
+// A support waiting to be placed; higher priority wins where two are too close to both act.
+struct Candidate {
+  SupportSpec spec;
+  int priority = 0;  // 3 end, 2 harness.json, 1 automatic clip
+  std::string origin;
+};
+
+SupportSpec EndSupport(const EndConfig& end, double s, const Polyline& route,
+                       const Eigen::Matrix3Xd& normals) {
+  SupportSpec sp;
+  sp.kind = end.kind;
+  sp.s = s;
+  sp.position = RoutePoint(route, s);
+  sp.tangent = RouteTangent(route, s);
+  sp.normal = NormalAt(route, normals, s);
+  sp.sliding = end.sliding;
+  return sp;
+}
+
+// Keeps the candidates in priority order, dropping an automatic clip closer than `gap` to a
+// kept support; two explicit supports that close are a set-up error.
+std::vector<Candidate> Place(std::vector<Candidate> all, double gap,
+                             std::vector<std::string>* notes) {
+  std::stable_sort(all.begin(), all.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.priority > b.priority; });
+  std::vector<Candidate> kept;
+  for (const Candidate& c : all) {
+    const auto clash = std::find_if(kept.begin(), kept.end(), [&](const Candidate& k) {
+      return std::abs(k.spec.s - c.spec.s) < gap;
+    });
+    if (clash == kept.end()) {
+      kept.push_back(c);
+    } else if (c.priority <= 1) {
+      notes->push_back(c.origin + " at s=" + Metres(c.spec.s) + " ignored: within " + Metres(gap) +
+                       " of the " + clash->origin + " support");
+    } else {
+      throw InvalidInput(c.origin + " support at s=" + Metres(c.spec.s) + " is within " +
+                         Metres(gap) + " of the " + clash->origin + " support at s=" +
+                         Metres(clash->spec.s) + " (give one support there, or set the end)");
+    }
+  }
+  std::sort(kept.begin(), kept.end(),
+            [](const Candidate& a, const Candidate& b) { return a.spec.s < b.spec.s; });
+  return kept;
+}
+
+}  // namespace
+
+MaterialSpec DefaultBundleMaterial(double d) {
+  MaterialSpec m;
+  m.diameter = d;
+  m.bending_stiffness = kDefaultBundleModulus * std::numbers::pi * std::pow(d, 4) / 64;
+  m.torsional_stiffness = m.bending_stiffness / 1.3;
+  m.linear_density = kDefaultBundleDensity * std::numbers::pi * d * d / 4;
+  return m;
+}
+
+CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
+                      const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                      const JunctionEnds& junction_ends) {
+  const DrawnCable& drawn = drawing.cables[cable];
+  const CableConfig cc = config.For(drawn.name);
+  CableSetup out;
+  out.cable = cable;
+  out.name = drawn.name;
+  out.route = CleanRoute(drawn.centreline);
+  const Polyline& route = out.route;
+  const double length = route.s[route.size() - 1];
+
+  double diameter = drawn.diameter;
+  if (cc.diameter) diameter = *cc.diameter;
+  if (!(diameter > 0)) {
+    diameter = kDefaultDiameter;
+    out.diameter_defaulted = true;
+    out.notes.push_back("drawn as a bare curve without diameter: " + Metres(diameter) +
+                        " assumed (set \"diameter\" in harness.json)");
+  }
+  if (cc.material) {
+    out.spec.material = *cc.material;
+    out.material_source = cc.material_source;
+  } else {
+    out.spec.material = DefaultBundleMaterial(diameter);
+    out.material_defaulted = true;
+    out.material_source = "default bundle estimate";
+    out.notes.push_back(
+        "material not given: PVC-insulated copper bundle estimated from the diameter "
+        "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)");
+  }
+  out.spec.material.diameter = diameter;
+  out.spec.name = drawn.name;
+  out.spec.length = length;
+  out.spec.gravity = cc.gravity.value_or(config.gravity);
+
+  // Twist-free frames along the drawing: clamps hold the drawn cross-section orientation, with
+  // the start normal pointing as far "up" (against gravity) as the tangent allows.
+  const Vec3 up =
+      out.spec.gravity.norm() > 0 ? Vec3(-out.spec.gravity.normalized()) : Vec3::UnitZ();
+  const Eigen::Matrix3Xd normals = TransportedNormals(route, up);
+
+  std::vector<Candidate> candidates;
+  const EndConfig start = cc.start.value_or(EndConfig{});
+  const EndConfig end = cc.end.value_or(EndConfig{});
+  if (!start.free && !junction_ends.start)
+    candidates.push_back({EndSupport(start, 0.0, route, normals), 3, "start"});
+  if (!end.free && !junction_ends.end)
+    candidates.push_back({EndSupport(end, length, route, normals), 3, "end"});
+  for (const ExtraSupportConfig& e : cc.supports) {
+    SupportSpec sp;
+    sp.kind = e.kind;
+    sp.sliding = e.sliding;
+    if (e.s) {
+      if (*e.s > length) {
+        throw InvalidInput("harness.json support at s=" + Metres(*e.s) +
+                           " lies beyond the cable (" + Metres(length) + ")");
+      }
+      sp.s = *e.s;
+      sp.position = RoutePoint(route, sp.s);
+    } else {
+      sp.s = NearestArcLength(route, *e.point);
+      sp.position = *e.point;
+    }
+    sp.tangent = RouteTangent(route, sp.s);
+    sp.normal = NormalAt(route, normals, sp.s);
+    candidates.push_back({sp, 2, "harness.json"});
+  }
+  if (cc.auto_clips.value_or(true)) {
+    std::vector<std::string> names;
+    for (const DrawnSolid& s : drawing.solids) names.push_back(s.name);
+    for (const ClipSpan& span : FindClipSpans(route, boxes, names, 1e-6)) {
+      SupportSpec sp;
+      sp.kind = SupportKind::kClip;
+      sp.s = 0.5 * (span.s_in + span.s_out);
+      sp.position = RoutePoint(route, sp.s);
+      sp.tangent = RouteTangent(route, sp.s);
+      candidates.push_back({sp, 1, "clip '" + span.solid_name + "'"});
+    }
+  }
+  const double gap = std::max(diameter, 1e-3 * length);
+  for (const Candidate& c : Place(candidates, gap, &out.notes)) {
+    out.spec.supports.push_back(c.spec);
+    out.support_origin.push_back(c.origin);
+  }
+  const bool in_network = junction_ends.start || junction_ends.end;
+  if (out.spec.supports.empty() && !in_network) {
+    throw InvalidInput("no supports: both ends are free and harness.json gives none");
+  }
+  if (in_network) out.junction = junction_ends.description;
+  return out;
+}
+
+int OutputSamples(double length) {
+  return std::clamp(static_cast<int>(std::ceil(length / 0.001)) + 1, 201, 2001);
+}
+
+CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
+                           double min_bend_radius_factor) {
+  const auto t0 = std::chrono::steady_clock::now();
+  CableRelaxation r;
+  r.setup = std::move(setup);
+  const RodSpec& spec = r.setup.spec;
+  RodSimulator sim(options);
+  r.result = sim.Simulate(spec, &r.setup.route);
+  MeasureRelaxation(min_bend_radius_factor, &r);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* out) {
+  CableRelaxation& r = *out;
+  const RodSpec& spec = r.setup.spec;
+  r.relaxed = SampleCenterline(r.result.solution.centerline,
+                               UniformArcLengths(spec.length, OutputSamples(spec.length)));
+
+  const int n = r.relaxed.size();
+  r.deviation.resize(n);
+  r.max_deviation = 0.0;
+  double sum_sq = 0.0;
+  for (int i = 0; i < n; ++i) {
+    double d = 0.0;
+    NearestArcLength(r.setup.route, r.relaxed.points.col(i), &d);
+    r.deviation[i] = d;
+    sum_sq += d * d;
+    if (d > r.max_deviation) {
+      r.max_deviation = d;
+      r.max_deviation_s = r.relaxed.s[i];
+    }
+  }
+  r.rms_deviation = std::sqrt(sum_sq / n);
+
+  // Curvature from the turning of consecutive element tangents of the finest level.
+  const RodSolution& sol = r.result.solution;
+  double max_kappa = 0.0;
+  for (size_t i = 0; i + 1 < sol.frames.size(); ++i) {
+    const double ds =
+        sol.frame_s[static_cast<Eigen::Index>(i + 1)] - sol.frame_s[static_cast<Eigen::Index>(i)];
+    const Vec3& a = sol.frames[i].d3;
+    const Vec3& b = sol.frames[i + 1].d3;
+    const double kappa = std::atan2(a.cross(b).norm(), a.dot(b)) / ds;
+    if (kappa > max_kappa) {
+      max_kappa = kappa;
+      r.min_bend_radius_s = 0.5 * (sol.frame_s[static_cast<Eigen::Index>(i)] +
+                                   sol.frame_s[static_cast<Eigen::Index>(i + 1)]);
+    }
+  }
+  r.min_bend_radius = max_kappa > 0 ? 1.0 / max_kappa : std::numeric_limits<double>::infinity();
+  r.bend_limit = min_bend_radius_factor * spec.material.diameter;
+  r.bend_flag = r.min_bend_radius < r.bend_limit;
+}
+
+Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
+  const CableSetup& su = r.setup;
+  const RodSpec& spec = su.spec;
+  const SimulationResult& res = r.result;
+  Json j;
+  j["name"] = su.name;
+  j["source"] = ToString(drawn.source);
+  j["length"] = spec.length;
+  j["diameter"] = spec.material.diameter;
+  j["diameter_defaulted"] = su.diameter_defaulted;
+  j["material"] = {{"bending_stiffness", spec.material.bending_stiffness},
+                   {"torsional_stiffness", spec.material.torsional_stiffness},
+                   {"linear_density", spec.material.linear_density},
+                   {"bending_ratio", spec.material.bending_ratio},
+                   {"source", su.material_source},
+                   {"defaulted", su.material_defaulted}};
+  j["gravity"] = ToJson(spec.gravity);
+  Json supports = Json::array();
+  for (size_t k = 0; k < spec.supports.size(); ++k) {
+    const SupportSpec& sp = spec.supports[k];
+    Json s = {{"kind", ToString(sp.kind)},       {"s", sp.s},
+              {"position", ToJson(sp.position)}, {"tangent", ToJson(sp.tangent.normalized())},
+              {"sliding", sp.sliding},           {"origin", su.support_origin[k]}};
+    if (k < res.solution.reactions.size()) {
+      s["reaction"] = {{"force", ToJson(res.solution.reactions[k].force)},
+                       {"moment", ToJson(res.solution.reactions[k].moment)}};
+    }
+    supports.push_back(s);
+  }
+  j["supports"] = supports;
+  if (!su.junction.empty()) j["junction"] = su.junction;
+  const Eigen::Index imax = std::min<Eigen::Index>(
+      r.relaxed.size() - 1, static_cast<Eigen::Index>(std::lround(r.max_deviation_s / spec.length *
+                                                                  (r.relaxed.size() - 1))));
+  j["deviation"] = {
+      {"max", r.max_deviation},
+      {"rms", r.rms_deviation},
+      {"max_at", {{"s", r.max_deviation_s}, {"point", ToJson(r.relaxed.points.col(imax))}}},
+      {"measure", "distance of the relaxed centreline to the drawn route"}};
+  const Polyline at =
+      SampleCenterline(res.solution.centerline, Eigen::VectorXd::Constant(1, r.min_bend_radius_s));
+  j["min_bend_radius"] = {{"radius", NumberOrNull(r.min_bend_radius)},
+                          {"s", r.min_bend_radius_s},
+                          {"point", ToJson(at.points.col(0))},
+                          {"limit", r.bend_limit},
+                          {"flag", r.bend_flag}};
+  j["twist_angle"] = NumberOrNull(res.solution.twist_angle);
+  j["solver"] = {{"converged", res.converged},
+                 {"stable", res.solution.summary.stable},
+                 {"iterations", res.newton_iterations},
+                 {"elements", res.level_elements.empty() ? 0 : res.level_elements.back()},
+                 {"estimated_error", NumberOrNull(res.estimated_error)},
+                 {"accuracy_met", res.accuracy_met},
+                 {"message", res.solution.summary.message},
+                 {"seconds", r.seconds}};
+  j["drawn_route"] = {{"points", su.route.size()},
+                      {"fit_error", drawn.fit_error},
+                      {"fit_error_meaning",
+                       "how far the recovered centreline may be from the drawn one (chord "
+                       "deviation of a curve's sampling, RMS circle-fit residual of a tube)"}};
+  Json pts = Json::array();
+  for (int i = 0; i < r.relaxed.size(); ++i) {
+    pts.push_back(
+        {r.relaxed.s[i], r.relaxed.points(0, i), r.relaxed.points(1, i), r.relaxed.points(2, i)});
+  }
+  j["relaxed_centreline"] = {{"columns", {"s", "x", "y", "z"}}, {"rows", pts}};
+  j["notes"] = su.notes;
+  return j;
+}
+
+}  // namespace cablefit::addin

@@ -1,0 +1,170 @@
+#include "cablefit/app/relax_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/formats/cad_file.h"
+#include "cablefit/formats/mesh_file.h"
+#include "relax_route.h"
+
+namespace cablefit::addin {
+namespace {
+
+std::string LowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+bool IsCadPath(const std::string& path) {
+  const std::string ext = LowerExtension(path);
+  return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
+}
+
+bool IsMeshPath(const std::string& path) {
+  static const char* const kExt[] = {".stl", ".obj", ".ply", ".gltf", ".glb",
+                                     ".3mf", ".off", ".dae", ".fbx"};
+  const std::string ext = LowerExtension(path);
+  return std::any_of(std::begin(kExt), std::end(kExt), [&](const char* e) { return ext == e; });
+}
+
+double UnitInMetres(const std::string& name) {
+  static const std::map<std::string, double> kUnits = {
+      {"m", 1.0},     {"cm", 0.01},     {"mm", 0.001}, {"um", 1e-6},
+      {"in", 0.0254}, {"inch", 0.0254}, {"ft", 0.3048}};
+  const auto it = kUnits.find(name);
+  if (it == kUnits.end()) {
+    throw InvalidInput("unknown length unit '" + name + "' (use m, cm, mm, um, in or ft)");
+  }
+  return it->second;
+}
+
+HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
+  if (IsCadPath(path)) return ReadCadFile(path);
+  if (!IsMeshPath(path)) {
+    throw FileError(path,
+                    "unknown extension (expected STEP, IGES or a mesh: STL, OBJ, PLY, glTF...)");
+  }
+  const std::vector<MeshTube> tubes = ReadMeshFile(path, mesh_unit);
+  if (tubes.empty()) throw FileError(path, "no tube found in the mesh");
+  HarnessDrawing d;
+  d.source_path = path;
+  const std::string stem = std::filesystem::path(path).stem().string();
+  double min_diameter = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < tubes.size(); ++k) {
+    DrawnCable c;
+    c.name = stem + "#" + std::to_string(k + 1);
+    c.centreline = tubes[k].centreline;
+    c.diameter = tubes[k].diameter;
+    c.source = CableSourceKind::kMesh;
+    c.fit_error = tubes[k].fit_error;
+    min_diameter = std::min(min_diameter, c.diameter);
+    d.cables.push_back(std::move(c));
+  }
+  // Branch ends recovered from a skeleton sit within a fraction of the tube radius of each other.
+  FindJunctions(&d, 0.25 * min_diameter);
+  return d;
+}
+
+double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& config) {
+  const auto& relaxed = f.cables[static_cast<size_t>(cable)];
+  if (relaxed) return relaxed->setup.spec.material.diameter;
+  const DrawnCable& drawn = f.drawing.cables[static_cast<size_t>(cable)];
+  const CableConfig cc = config.For(drawn.name);
+  if (cc.diameter) return *cc.diameter;
+  return drawn.diameter > 0 ? drawn.diameter : kDefaultDiameter;
+}
+
+namespace {
+
+// The relaxed centreline at about `per_diameter` points per diameter (17 to 401 points): the
+// writer interpolates a B-spline through them, and a spline through a few hundred points with a
+// tight turn near an end can make the OCCT pipe sweep fail where a sparser one does not.
+Polyline ForWriting(const Polyline& relaxed, double diameter, double per_diameter) {
+  const double length = relaxed.s[relaxed.size() - 1];
+  const int n =
+      std::clamp(static_cast<int>(std::ceil(length / diameter * per_diameter)) + 1, 17, 401);
+  return SampleCenterline(relaxed, UniformArcLengths(length, n));
+}
+
+Polyline AsDrawnForWriting(const Polyline& drawn, double diameter, double per_diameter) {
+  try {
+    return ForWriting(CleanRoute(drawn), diameter, per_diameter);
+  } catch (const InvalidInput&) {
+    return drawn;  // the writer reports what is wrong with it
+  }
+}
+
+}  // namespace
+
+void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
+                          const HarnessConfig& config) {
+  std::string first_problem;
+  for (const double per_diameter : {2.0, 0.5}) {
+    std::vector<RelaxedCable> out;
+    for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+      RelaxedCable rc;
+      rc.source_cable = static_cast<int>(i);
+      rc.diameter = OutputDiameter(f, static_cast<int>(i), config);
+      // A failed cable is written as drawn, resampled like a relaxed one: the raw skeleton of a
+      // mesh tube is unevenly spaced, which makes the B-spline through it swing. (The crash once
+      // seen here was OCCT's MakePipe on a smooth spine; the writer no longer uses it.)
+      rc.centreline = f.cables[i] ? ForWriting(f.cables[i]->relaxed, rc.diameter, per_diameter)
+                                  : AsDrawnForWriting(f.drawing.cables[i].centreline, rc.diameter,
+                                                      per_diameter);
+      out.push_back(std::move(rc));
+    }
+    try {
+      WriteRelaxedStep(path, f.drawing, out);
+      return;
+    } catch (const FileError&) {
+      throw;
+    } catch (const InvalidInput& e) {
+      if (first_problem.empty()) first_problem = e.what();
+    }
+  }
+  throw FileError(path, first_problem);
+}
+
+json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) {
+  json::Json j;
+  j["format"] = "cablefit-relax/1";
+  j["input"] = f.input;
+  j["length_unit_of_input"] = f.drawing.length_unit;
+  j["config"] = config.path.empty() ? json::Json() : json::Json(config.path);
+  j["min_bend_radius_factor"] = config.min_bend_radius_factor;
+  if (!f.networks.empty()) {
+    j["networks"] = f.networks;
+    j["networks_meaning"] =
+        "cables solved together: branch_loads are the force and moment each cable exerts on its "
+        "junction (world frame, N and N m), contacts the force a solid exerts on the cable";
+  }
+  json::Json cables = json::Json::array();
+  for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+    if (f.cables[i]) {
+      cables.push_back(CableToJson(*f.cables[i], f.drawing.cables[i]));
+    } else {
+      cables.push_back({{"name", f.drawing.cables[i].name},
+                        {"error", f.cable_errors[i]},
+                        {"written_as", "drawn (not relaxed)"}});
+    }
+  }
+  j["cables"] = cables;
+  json::Json solids = json::Json::array();
+  for (const DrawnSolid& s : f.drawing.solids) solids.push_back(s.name);
+  j["solids"] = solids;
+  // Written before the STEP and pictures: their times are in the command's per-input line.
+  j["seconds"] = {{"read", f.times.read}, {"relax", f.times.relax}};
+  return j;
+}
+
+}  // namespace cablefit::addin

@@ -1,0 +1,189 @@
+#include "cablefit/app/relax_report.h"
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <mutex>
+#include <set>
+#include <sstream>
+
+#include "cablefit/formats/atomic_file.h"
+#include "cablefit/formats/deviation_views.h"
+#include "cablefit/formats/png_file.h"
+#include "cablefit/app/report_html.h"
+
+namespace cablefit::addin {
+namespace {
+
+std::mutex& RenderMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+SupportMarkerKind MarkerOf(SupportKind kind) {
+  switch (kind) {
+    case SupportKind::kClamp:
+      return SupportMarkerKind::kClamp;
+    case SupportKind::kClip:
+      return SupportMarkerKind::kClip;
+    case SupportKind::kPin:
+      return SupportMarkerKind::kPin;
+  }
+  return SupportMarkerKind::kPin;
+}
+
+// All cables of `f`, or only cable `only` (>= 0) for a close-up.
+Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only = -1) {
+  Scene scene;
+  scene.title =
+      (only >= 0 ? f.stem + ": " + f.drawing.cables[static_cast<size_t>(only)].name : f.stem) +
+      ": relaxed, colour = distance to the drawn route (grey line)";
+  scene.gravity = config.gravity;
+  for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+    if (only >= 0 && static_cast<int>(i) != only) continue;
+    const DrawnCable& drawn = f.drawing.cables[i];
+    SceneTube tube;
+    tube.name = drawn.name;
+    tube.radius = 0.5 * OutputDiameter(f, static_cast<int>(i), config);
+    SceneGhost ghost;
+    ghost.name = drawn.name + " (drawn)";
+    ghost.points = drawn.centreline.points;
+    scene.ghosts.push_back(ghost);
+    if (const auto& r = f.cables[i]) {
+      tube.centreline = r->relaxed;
+      tube.deviation = r->deviation;
+      for (const SupportSpec& sp : r->setup.spec.supports) {
+        scene.supports.push_back({MarkerOf(sp.kind), sp.position, " "});
+      }
+    } else {
+      tube.centreline = drawn.centreline;
+    }
+    scene.tubes.push_back(std::move(tube));
+  }
+  return scene;
+}
+
+std::string Row(const std::string& file, const std::string& cable, const CableRelaxation& r) {
+  std::ostringstream h;
+  const bool ok = r.result.converged && r.result.solution.summary.stable;
+  h << "<tr><td>" << HtmlEscape(file) << "</td><td>" << HtmlEscape(cable) << "</td><td>"
+    << FormatLength(r.setup.spec.length) << "</td><td>"
+    << FormatLength(r.setup.spec.material.diameter)
+    << (r.setup.diameter_defaulted ? " (assumed)" : "") << "</td><td>"
+    << (r.setup.material_defaulted ? "default estimate" : HtmlEscape(r.setup.material_source))
+    << "</td><td>" << r.setup.spec.supports.size() << "</td><td data-v=\"" << r.max_deviation
+    << "\">" << FormatLength(r.max_deviation) << " at s = " << FormatLength(r.max_deviation_s)
+    << "</td><td data-v=\"" << r.rms_deviation << "\">" << FormatLength(r.rms_deviation)
+    << "</td><td data-v=\"" << r.min_bend_radius << "\">"
+    << (std::isfinite(r.min_bend_radius) ? FormatLength(r.min_bend_radius) : "straight")
+    << (r.bend_flag ? " <span class=\"badge fail\">&lt; " + FormatLength(r.bend_limit) + "</span>"
+                    : "")
+    << "</td><td>" << FormatNumber(r.result.solution.twist_angle * 180 / M_PI) << "°</td><td>"
+    << "<span class=\"badge " << (ok ? "ok" : "fail") << "\">"
+    << (r.result.converged ? (r.result.solution.summary.stable ? "stable" : "unstable")
+                           : "not converged")
+    << "</span></td><td>";
+  if (!r.setup.junction.empty()) h << "junction " << HtmlEscape(r.setup.junction) << "<br>";
+  for (const std::string& n : r.setup.notes) h << HtmlEscape(n) << "<br>";
+  h << "</td></tr>\n";
+  return h.str();
+}
+
+}  // namespace
+
+namespace {
+
+void RenderToPng(const std::string& path, const Scene& scene) {
+  RenderOptions options;
+  options.width = 1400;
+  options.height = 900;
+  Image image;
+  {
+    std::lock_guard lock(RenderMutex());
+    image = RenderDeviationViews(scene, options);
+  }
+  WritePng(path, image);
+}
+
+// A file-name-safe version of a cable name ("cable_ä#2" -> "cable___2").
+std::string FileSafe(const std::string& name) {
+  std::string out;
+  for (const unsigned char c : name) out += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
+  return out.empty() ? "cable" : out;
+}
+
+}  // namespace
+
+void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,
+                           const HarnessConfig& config) {
+  RenderToPng(path, HarnessScene(f, config));
+}
+
+std::vector<std::string> WriteCloseUpPictures(const std::string& dir, const RelaxedFile& f,
+                                              const HarnessConfig& config) {
+  std::vector<std::string> names;
+  std::set<std::string> used;
+  for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
+    std::string name = f.stem + "-" + FileSafe(f.drawing.cables[i].name);
+    if (!used.insert(name).second) name.append("-").append(std::to_string(i + 1));
+    used.insert(name);
+    name += "-deviation.png";
+    RenderToPng((std::filesystem::path(dir) / name).string(),
+                HarnessScene(f, config, static_cast<int>(i)));
+    names.push_back(name);
+  }
+  return names;
+}
+
+void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& files,
+                      const HarnessConfig& config, double seconds) {
+  std::ostringstream h;
+  h << PageHead("cablefit relax");
+  h << "<section class=\"card\"><h2>Relaxed cables</h2>\n<p>Each cable is solved as a Kirchhoff "
+       "rod under gravity from its drawn shape (nearest equilibrium), ends clamped at their drawn "
+       "pose unless harness.json says otherwise. Deviation = distance of the relaxed centreline "
+       "to the drawn route. Bend radius flagged below "
+    << FormatNumber(config.min_bend_radius_factor) << " diameters.</p>\n"
+    << "<table class=\"sortable\"><thead><tr><th>input</th><th>cable</th><th>length</th>"
+       "<th>diameter</th><th>material</th><th>supports</th><th>max deviation</th><th>rms</th>"
+       "<th>min bend radius</th><th>twist</th><th>solver</th><th>notes</th></tr></thead><tbody>\n";
+  std::vector<std::string> failures;
+  for (const RelaxedFile& f : files) {
+    if (!f.error.empty()) failures.push_back(f.input + ": " + f.error);
+    for (size_t i = 0; i < f.cables.size(); ++i) {
+      if (f.cables[i]) {
+        h << Row(f.stem, f.drawing.cables[i].name, *f.cables[i]);
+      } else {
+        h << "<tr><td>" << HtmlEscape(f.stem) << "</td><td>" << HtmlEscape(f.drawing.cables[i].name)
+          << "</td><td colspan=\"9\"><span class=\"badge fail\">failed</span> "
+          << HtmlEscape(f.cable_errors[i]) << "</td><td></td></tr>\n";
+      }
+    }
+  }
+  h << "</tbody></table></section>\n";
+  if (!failures.empty()) {
+    h << "<section class=\"card\"><h2>Failures</h2><ul class=\"notes\">";
+    for (const std::string& e : failures) h << "<li>" << HtmlEscape(e) << "</li>";
+    h << "</ul></section>\n";
+  }
+  for (const RelaxedFile& f : files) {
+    if (f.picture.empty()) continue;
+    h << "<section class=\"card\"><h2>" << HtmlEscape(f.stem) << "</h2><figure><a href=\""
+      << HtmlEscape(f.picture) << "\"><img src=\"" << HtmlEscape(f.picture) << "\" alt=\""
+      << HtmlEscape(f.stem) << "\"></a><figcaption>" << HtmlEscape(f.input)
+      << ": relaxed cables coloured by their distance to the drawn route (grey); squares = "
+         "clamps, rings = clips, triangles = pins. Outputs: "
+      << HtmlEscape(f.stem) << ".step, " << HtmlEscape(f.stem) << ".json.</figcaption></figure>";
+    for (size_t i = 0; i < f.close_ups.size(); ++i) {
+      h << "<figure><a href=\"" << HtmlEscape(f.close_ups[i]) << "\"><img src=\""
+        << HtmlEscape(f.close_ups[i]) << "\" alt=\"" << HtmlEscape(f.drawing.cables[i].name)
+        << "\"></a><figcaption>" << HtmlEscape(f.drawing.cables[i].name)
+        << " alone</figcaption></figure>";
+    }
+    h << "</section>\n";
+  }
+  h << PageTail("cablefit relax, " + FormatSeconds(seconds));
+  WriteFileAtomically(path, h.str());
+}
+
+}  // namespace cablefit::addin

@@ -1,0 +1,178 @@
+// `cablefit diagnose PATH... --out DIR [--jobs N] [--timeout S]` (cli-v1.md): every recording case under the
+// paths is diagnosed into DIR/<case>/ (diagnosis.json, nominal/fitted curves, report.html), with
+// a run summary DIR/report.html. A bad case is reported and skipped; the others still run.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+
+#include "cablefit/app/batch_pool.h"
+#include "cablefit/cli/commands.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/formats/case_reader.h"
+#include "cablefit/app/diagnose_case.h"
+#include "cablefit/app/diagnose_output.h"
+#include "progress_bar.h"
+#include "cablefit/app/report_case.h"
+#include "cablefit/app/report_html.h"
+#include "cablefit/app/report_summary.h"
+
+namespace cablefit::addin {
+namespace {
+
+struct DiagnoseArgs {
+  std::vector<std::string> paths;
+  std::string out_dir;
+  int jobs = 1;
+  double timeout = 0.0;  // [s] per case, 0 = no limit
+};
+
+/// A case name as a folder name: characters outside [A-Za-z0-9._-] become '_' so that a name
+/// can never leave DIR.
+std::string FolderName(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '.' || c == '_' || c == '-';
+    out += ok ? c : '_';
+  }
+  if (out.empty() || out == "." || out == "..") out = "case";
+  return out;
+}
+
+/// One line "<file>: <problem>" for any exception from one case.
+std::string ErrorLine(const std::exception_ptr& error, const std::string& file) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const FileError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return file + ": " + e.what();
+  } catch (...) {
+    return file + ": unknown error";
+  }
+}
+
+struct CaseOutcome {
+  SummaryRow row;
+  bool ok = false;
+};
+
+int RunDiagnose(const DiagnoseArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::string> failures;  // "<file>: <problem>", listed again at the end
+  // Paths are expanded one by one so that one bad path does not hide the cases of the others.
+  std::vector<std::string> good_paths;
+  for (const std::string& p : a.paths) {
+    try {
+      FindCaseFiles({p});
+      good_paths.push_back(p);
+    } catch (const FileError& e) {
+      failures.push_back(e.what());
+      std::fprintf(stderr, "cablefit: %s\n", e.what());
+    }
+  }
+  CaseFileList list;
+  if (!good_paths.empty()) list = FindCaseFiles(good_paths);
+  for (const FileError& e : list.errors) {
+    failures.push_back(e.what());
+    std::fprintf(stderr, "cablefit: %s\n", e.what());
+  }
+  const int n = static_cast<int>(list.files.size());
+  if (n == 0) {
+    std::fprintf(stderr, "cablefit: diagnose: no recording case could be read\n");
+    return kExitUsage;
+  }
+  const int jobs = ResolveJobs(a.jobs, n);
+  const std::filesystem::path out_dir(a.out_dir);
+  std::vector<CaseOutcome> outcomes(static_cast<std::size_t>(n));
+  std::mutex failures_mutex;
+  {
+    ProgressBar bar(n);
+    const auto errors = RunBatch(n, jobs, [&](int i) {
+      const std::string& file = list.files[static_cast<std::size_t>(i)];
+      CaseOutcome& o = outcomes[static_cast<std::size_t>(i)];
+      o.row.name = file;
+      const auto t0 = std::chrono::steady_clock::now();
+      try {
+        const ScopedDeadline deadline(a.timeout);  // the solvers check it (core/deadline.h)
+        DiagnoseCaseOptions options;
+        const DiagnosedCase d = DiagnoseCase(file, options, [&](double f, const std::string& s) {
+          bar.Update(i, f, std::filesystem::path(file).parent_path().filename().string() + ": " + s);
+          return true;
+        });
+        const std::string folder = FolderName(d.recording.name);
+        const std::string dir = (out_dir / folder).string();
+        WriteDiagnosisFiles(dir, d);
+        WriteCaseReport(dir, d);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        o.row = SummaryRow{d.recording.name, folder + "/report.html", ToString(d.kind), d.effect,
+                           d.confidence, d.interval, d.clamp, d.baseline.max, d.fitted.max,
+                           d.deviation_unit, seconds, ""};
+        o.ok = true;
+        char line[512];
+        std::snprintf(line, sizeof line, "%s: %s, confidence %.2f, %.1f s", d.recording.name.c_str(),
+                      d.effect.c_str(), d.confidence, seconds);
+        bar.PrintLine(stdout, line);
+      } catch (...) {
+        o.row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        o.row.error = ErrorLine(std::current_exception(), file);
+        {
+          std::lock_guard lock(failures_mutex);
+          failures.push_back(o.row.error);
+        }
+        bar.PrintLine(stderr, "cablefit: " + o.row.error);
+      }
+      bar.Finish(i);
+    });
+    (void)errors;  // every exception is handled inside the work item
+  }
+  std::vector<SummaryRow> rows;
+  int diagnosed = 0;
+  for (const CaseOutcome& o : outcomes) {
+    rows.push_back(o.row);
+    diagnosed += o.ok ? 1 : 0;
+  }
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  try {
+    WriteRunSummary((out_dir / "report.html").string(), rows, total, jobs);
+  } catch (const std::exception& e) {
+    failures.push_back(e.what());
+    std::fprintf(stderr, "cablefit: %s\n", e.what());
+  }
+  std::printf("%d of %d case(s) diagnosed in %s; summary: %s\n", diagnosed, n,
+              FormatSeconds(total).c_str(), (out_dir / "report.html").string().c_str());
+  if (!failures.empty()) {
+    std::fprintf(stderr, "cablefit: %zu input(s) failed:\n", failures.size());
+    for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", f.c_str());
+  }
+  if (diagnosed == 0) return kExitUsage;
+  return failures.empty() ? kExitOk : kExitSomeFailed;
+}
+
+}  // namespace
+
+void RegisterDiagnoseCommand(CLI::App& app, int* exit_code) {
+  auto args = std::make_shared<DiagnoseArgs>();
+  auto* cmd = app.add_subcommand(
+      "diagnose", "Find which effect explains how recorded cables differ from their simulation");
+  cmd->add_option("PATH", args->paths,
+                  "case.json, a folder holding one, or a folder of case folders")
+      ->required();
+  cmd->add_option("--out", args->out_dir,
+                  "output folder: <case>/diagnosis.json, curves, report.html, and report.html")
+      ->required();
+  cmd->add_option("--jobs", args->jobs, "cases diagnosed in parallel (0 = one per core)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--timeout", args->timeout,
+                  "seconds one case may take; a case that takes longer is reported as failed "
+                  "and the others go on (0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->callback([args, exit_code] { *exit_code = RunDiagnose(*args); });
+}
+
+}  // namespace cablefit::addin

@@ -1,0 +1,41 @@
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "cablefit/cli/commands.h"
+#include "cablefit/core/base/errors.h"
+
+namespace cablefit::addin {
+
+int RunCommandLine(int argc, char** argv) {
+  CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
+               "does not look like the real one"};
+  app.require_subcommand(1);
+  int exit_code = kExitOk;
+  RegisterSimulateCommand(app, &exit_code);
+  RegisterDiagnoseCommand(app, &exit_code);
+  RegisterRelaxCommand(app, &exit_code);
+  RegisterSectionCommand(app, &exit_code);
+  RegisterBenchCommand(app, &exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    std::fprintf(stderr, "run 'cablefit --help' for usage\n");
+    return kExitUsage;
+  } catch (const InvalidInput& e) {
+    // Typed user-input errors arrive here as one line "<file>: <problem>".
+    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    return kExitUsage;
+  }
+  return exit_code;
+}
+
+}  // namespace cablefit::addin

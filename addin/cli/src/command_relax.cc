@@ -1,0 +1,312 @@
+// `cablefit relax INPUT... --out DIR [--config HARNESS.json] [--jobs N] [--unit U]`: every cable
+// of harness CAD or meshes relaxed under gravity from its drawn shape (spec: cli-v1 "relax").
+// Three phases, each parallel over `--jobs` workers: read the inputs, solve every cable of every
+// input, write each input's STEP/JSON/PNG; then report.html. CAD I/O is serialised (OCCT's
+// readers and writers keep global state).
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+#include "cablefit/app/batch_pool.h"
+#include "cablefit/cli/commands.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/app/harness_config.h"
+#include "progress_bar.h"
+#include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_file.h"
+#include "cablefit/app/relax_network.h"
+#include "cablefit/app/relax_report.h"
+
+namespace cablefit::addin {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct RelaxArgs {
+  std::vector<std::string> inputs;
+  std::string out_dir;
+  std::string config;
+  int jobs = 0;
+  std::string unit = "mm";
+  double accuracy = 1e-6;
+  bool pictures = true;
+  bool close_ups = false;
+  double timeout = 0.0;  // [s] per cable (or group solved together), 0 = no limit
+};
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Files named on the command line, and the STEP/IGES/mesh files directly inside named folders
+// (sorted, so runs are reproducible). A path that does not exist is a failure of its own.
+std::vector<std::string> ExpandInputs(const std::vector<std::string>& inputs,
+                                      std::vector<std::string>* failures) {
+  std::vector<std::string> files;
+  for (const std::string& p : inputs) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      std::vector<std::string> found;
+      for (const auto& entry : fs::directory_iterator(p, ec)) {
+        const std::string f = entry.path().string();
+        if (entry.is_regular_file() && (IsCadPath(f) || IsMeshPath(f))) found.push_back(f);
+      }
+      std::sort(found.begin(), found.end());
+      if (found.empty()) failures->push_back(p + ": folder holds no STEP, IGES or mesh file");
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (fs::exists(p, ec)) {
+      files.push_back(p);
+    } else {
+      failures->push_back(p + ": no such file or folder");
+    }
+  }
+  return files;
+}
+
+// Output stems unique within the run: a second "harness" becomes "harness-igs", then "-2"...
+std::vector<std::string> UniqueStems(const std::vector<std::string>& files) {
+  std::set<std::string> used;
+  std::vector<std::string> stems;
+  for (const std::string& f : files) {
+    const fs::path p(f);
+    std::string stem = p.stem().string();
+    if (used.count(stem))
+      stem +=
+          "-" + p.extension().string().substr(std::min<size_t>(1, p.extension().string().size()));
+    for (int k = 2; used.count(stem); ++k) stem = p.stem().string() + "-" + std::to_string(k);
+    used.insert(stem);
+    stems.push_back(stem);
+  }
+  return stems;
+}
+
+std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s: %s: L=%.3f m, max deviation %.2f mm at s=%.3f m (rms %.2f mm), min bend "
+                "radius %.1f mm%s, %d supports, %s%s, %.1f ms",
+                f.stem.c_str(), r.setup.name.c_str(), r.setup.spec.length, 1e3 * r.max_deviation,
+                r.max_deviation_s, 1e3 * r.rms_deviation, 1e3 * r.min_bend_radius,
+                r.bend_flag ? " (TOO TIGHT)" : "", static_cast<int>(r.setup.spec.supports.size()),
+                r.result.solution.summary.stable ? "stable" : "UNSTABLE",
+                r.setup.material_defaulted ? ", default material" : "", 1e3 * r.seconds);
+  return buf;
+}
+
+int RunRelax(const RelaxArgs& a) {
+  const auto start = Clock::now();
+  const double unit = UnitInMetres(a.unit);
+  HarnessConfig config;
+  if (!a.config.empty()) config = ReadHarnessConfig(a.config);
+  SimulationOptions sim_options;
+  sim_options.accuracy = a.accuracy;
+  std::string why;
+  if (!sim_options.IsValid(&why)) throw InvalidInput("--accuracy: " + why);
+
+  std::vector<std::string> failures;  // "<file>: <problem>"
+  const std::vector<std::string> paths = ExpandInputs(a.inputs, &failures);
+  for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", f.c_str());
+  const std::vector<std::string> stems = UniqueStems(paths);
+  const int n = static_cast<int>(paths.size());
+  std::vector<RelaxedFile> files(static_cast<size_t>(n));
+  std::mutex cad_mutex, failures_mutex;
+  const fs::path out(a.out_dir);
+  ProgressBar bar(3 * n + 1);
+  auto fail = [&](RelaxedFile& f, const std::string& problem) {
+    std::lock_guard lock(failures_mutex);
+    if (f.error.empty()) f.error = problem;
+    failures.push_back(f.input + ": " + problem);
+    bar.PrintLine(stderr, "cablefit: " + f.input + ": " + problem);
+  };
+
+  // 1. Read.
+  RunBatch(n, ResolveJobs(a.jobs, n), [&](int i) {
+    RelaxedFile& f = files[static_cast<size_t>(i)];
+    f.input = paths[static_cast<size_t>(i)];
+    f.stem = stems[static_cast<size_t>(i)];
+    bar.Update(i, 0.5, f.stem + ": read");
+    const auto t0 = Clock::now();
+    try {
+      std::unique_lock lock(cad_mutex, std::defer_lock);
+      if (IsCadPath(f.input)) lock.lock();
+      f.drawing = ReadHarnessInput(f.input, unit);
+      f.read_ok = true;
+      f.cables.resize(f.drawing.cables.size());
+      f.cable_errors.resize(f.drawing.cables.size());
+    } catch (...) {
+      fail(f, ErrorText(std::current_exception()));
+    }
+    f.times.read = Since(t0);
+    bar.Finish(i);
+  });
+
+  // A harness.json entry that names no cable is most likely a typo: say so (not a failure,
+  // the same sidecar may serve several drawings).
+  for (const auto& [name, unused] : config.cables) {
+    bool found = false;
+    for (const RelaxedFile& f : files)
+      for (const DrawnCable& c : f.drawing.cables) found = found || c.name == name;
+    if (!found) {
+      bar.PrintLine(stderr, "cablefit: warning: " + config.path + ": cables." + name +
+                                " matches no cable of the inputs");
+    }
+  }
+
+  // 2. Relax every cable of every input that was read.
+  // A job is one group of cables solved together: a single cable, or a network of cables
+  // joined at breakouts / near solids they may touch (see relax_network.h).
+  struct Job {
+    int file;
+    RelaxGroup group;
+  };
+  std::vector<Job> jobs;
+  std::vector<std::vector<OrientedBox>> boxes(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    RelaxedFile& f = files[static_cast<size_t>(i)];
+    boxes[static_cast<size_t>(i)] = SolidBoxes(f.drawing);
+    if (!f.read_ok) continue;
+    try {
+      for (RelaxGroup& g : GroupCables(f.drawing, boxes[static_cast<size_t>(i)], config))
+        jobs.push_back({i, std::move(g)});
+    } catch (...) {
+      fail(f, ErrorText(std::current_exception()));
+    }
+  }
+  const int nj = static_cast<int>(jobs.size());
+  std::vector<double> job_seconds(static_cast<size_t>(nj), 0.0);
+  std::mutex network_mutex;
+  RunBatch(nj, ResolveJobs(a.jobs, nj), [&](int k) {
+    const Job& job = jobs[static_cast<size_t>(k)];
+    RelaxedFile& f = files[static_cast<size_t>(job.file)];
+    const std::string label = GroupLabel(f.drawing, job.group);
+    bar.Update(n + job.file, static_cast<double>(job.group.cables.front()) / f.drawing.cables.size(),
+               f.stem + ": relax " + label);
+    const auto t0 = Clock::now();
+    const ScopedDeadline deadline(a.timeout);  // the solver checks it (core/deadline.h)
+    GroupOutcome g = RelaxGroupCables(f.drawing, job.group, boxes[static_cast<size_t>(job.file)],
+                                      config, sim_options);
+    const std::string& problem = g.problem;
+    std::vector<CableRelaxation>& done = g.cables;
+    if (!g.network.is_null()) {
+      std::lock_guard lock(network_mutex);
+      f.networks.push_back(std::move(g.network));
+    }
+    if (problem.empty()) {
+      for (CableRelaxation& r : done) {
+        bar.PrintLine(stdout, CableLine(f, r));
+        f.cables[static_cast<size_t>(r.setup.cable)] = std::move(r);
+      }
+    } else {
+      for (int c : job.group.cables) f.cable_errors[static_cast<size_t>(c)] = problem;
+      fail(f, (job.group.cables.size() > 1 ? "cables '" : "cable '") + label + "': " + problem);
+    }
+    job_seconds[static_cast<size_t>(k)] = Since(t0);
+  });
+  for (int k = 0; k < nj; ++k)
+    files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].times.relax +=
+        job_seconds[static_cast<size_t>(k)];
+
+  // 3. Write each input's outputs.
+  RunBatch(n, ResolveJobs(a.jobs, n), [&](int i) {
+    RelaxedFile& f = files[static_cast<size_t>(i)];
+    bar.Finish(n + i);
+    if (!f.read_ok) {
+      bar.Finish(2 * n + i);
+      return;
+    }
+    try {
+      bar.Update(2 * n + i, 0.1, f.stem + ": write JSON, STEP");
+      auto t0 = Clock::now();
+      json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, config));
+      f.times.json = Since(t0);
+      t0 = Clock::now();
+      {
+        std::lock_guard lock(cad_mutex);
+        WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config);
+      }
+      f.times.step = Since(t0);
+      if (a.pictures) {
+        bar.Update(2 * n + i, 0.5, f.stem + ": picture");
+        t0 = Clock::now();
+        f.picture = f.stem + "-deviation.png";
+        // Also under the CAD lock: a crash was once seen with OSMesa rendering while OCCT wrote
+        // another file (not reproduced since); both spawn their own worker threads.
+        std::lock_guard lock(cad_mutex);
+        WriteDeviationPicture((out / f.picture).string(), f, config);
+        if (a.close_ups) f.close_ups = WriteCloseUpPictures(out.string(), f, config);
+        f.times.picture = Since(t0);
+      }
+      char buf[512];
+      std::snprintf(buf, sizeof buf,
+                    "%s: %zu cables, %zu solids; seconds: read %.3f, relax %.3f, STEP %.3f, "
+                    "JSON %.3f, picture %.3f",
+                    f.stem.c_str(), f.drawing.cables.size(), f.drawing.solids.size(), f.times.read,
+                    f.times.relax, f.times.step, f.times.json, f.times.picture);
+      bar.PrintLine(stdout, buf);
+    } catch (...) {
+      fail(f, ErrorText(std::current_exception()));
+    }
+    bar.Finish(2 * n + i);
+  });
+
+  bool any_read = false;
+  for (const RelaxedFile& f : files) any_read = any_read || f.read_ok;
+  if (any_read) {
+    try {
+      WriteRelaxReport((out / "report.html").string(), files, config, Since(start));
+    } catch (const std::exception& e) {
+      failures.push_back(std::string("report.html: ") + e.what());
+      bar.PrintLine(stderr, std::string("cablefit: ") + e.what());
+    }
+  }
+  bar.Finish(3 * n);
+  if (!failures.empty()) {
+    std::fprintf(stderr, "cablefit: relax: %zu failure(s):\n", failures.size());
+    for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", f.c_str());
+  }
+  if (!any_read) {
+    std::fprintf(stderr, "cablefit: relax: no input could be read\n");
+    return kExitUsage;
+  }
+  return failures.empty() ? kExitOk : kExitSomeFailed;
+}
+
+}  // namespace
+
+void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
+  auto args = std::make_shared<RelaxArgs>();
+  auto* cmd = app.add_subcommand(
+      "relax", "Relax the cables of harness CAD or meshes under gravity from their drawn shape");
+  cmd->add_option("INPUT", args->inputs,
+                  "STEP/IGES files, meshes (STL, OBJ, PLY, glTF...), or "
+                  "folders of them")
+      ->required();
+  cmd->add_option("--out", args->out_dir,
+                  "output folder: <stem>.step, <stem>.json, <stem>-deviation.png, report.html")
+      ->required();
+  cmd->add_option("--config", args->config, "harness.json: materials, supports, gravity per cable");
+  cmd->add_option("--jobs", args->jobs, "parallel workers (0 = one per core)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--timeout", args->timeout,
+                  "seconds one cable may take to relax; a cable that takes longer is reported "
+                  "as failed and the others go on (0 = no limit)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--unit", args->unit, "length unit of mesh files (m, cm, mm, um, in, ft)")
+      ->check(CLI::IsMember({"m", "cm", "mm", "um", "in", "inch", "ft"}))
+      ->capture_default_str();
+  cmd->add_option("--accuracy", args->accuracy, "requested accuracy of relaxed positions [m]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag("!--no-pictures", args->pictures, "skip the deviation pictures");
+  cmd->add_flag("--close-ups", args->close_ups,
+                "also one picture per cable: <stem>-<cable>-deviation.png");
+  cmd->callback([args, exit_code] { *exit_code = RunRelax(*args); });
+}
+
+}  // namespace cablefit::addin

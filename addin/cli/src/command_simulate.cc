@@ -1,0 +1,78 @@
+// `cablefit simulate CASE --out DIR [--initial FILE.csv]`: the nominal set-up of one case.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+
+#include "cablefit/cli/commands.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/formats/case_reader.h"
+#include "cablefit/formats/centerline_csv.h"
+#include "cablefit/app/solution_json.h"
+
+namespace cablefit::addin {
+namespace {
+
+struct SimulateArgs {
+  std::string case_path;
+  std::string out_dir;
+  std::string initial;
+  double accuracy = 1e-6;
+  int samples = 401;
+};
+
+int RunSimulate(const SimulateArgs& a) {
+  const RecordingCase rc = ReadRecordingCase(a.case_path);
+  Polyline initial;
+  if (!a.initial.empty()) {
+    initial = ReadCenterlineCsv(a.initial);
+    if (initial.size() < 2) throw FileError(a.initial, "needs at least 2 points");
+  }
+  SimulationOptions opt;
+  opt.accuracy = a.accuracy;
+  RodSimulator sim(opt);
+  SimulationResult r;
+  try {
+    r = sim.Simulate(rc.nominal, a.initial.empty() ? nullptr : &initial);
+  } catch (const FileError&) {
+    throw;
+  } catch (const InvalidInput& e) {
+    throw FileError(rc.case_file, e.what());
+  }
+  const std::filesystem::path dir(a.out_dir);
+  const Polyline out = SampleCenterline(r.solution.centerline,
+                                        UniformArcLengths(rc.nominal.length, a.samples));
+  WriteCenterlineCsv((dir / "centerline.csv").string(), out);
+  json::WriteJsonFile((dir / "solution.json").string(), SolutionToJson(rc.name, rc.nominal, r));
+  std::printf("%s: %s, %d elements, %d Newton iterations, est. error %.1e m, %s, %.1f ms\n",
+              rc.name.c_str(), r.converged ? "converged" : "NOT CONVERGED",
+              r.level_elements.empty() ? 0 : r.level_elements.back(), r.newton_iterations,
+              r.estimated_error, r.solution.summary.stable ? "stable" : "UNSTABLE",
+              r.seconds * 1e3);
+  if (!r.converged) {
+    std::fprintf(stderr, "cablefit: %s: solver did not converge: %s\n", rc.case_file.c_str(),
+                 r.solution.summary.message.c_str());
+    return kExitSomeFailed;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void RegisterSimulateCommand(CLI::App& app, int* exit_code) {
+  auto args = std::make_shared<SimulateArgs>();
+  auto* cmd = app.add_subcommand("simulate", "Solve the nominal set-up of one recording case");
+  cmd->add_option("CASE", args->case_path, "case.json or a folder holding one")->required();
+  cmd->add_option("--out", args->out_dir, "output folder (centerline.csv, solution.json)")
+      ->required();
+  cmd->add_option("--initial", args->initial,
+                  "starting shape, CSV with s,x,y,z or x,y,z (selects the equilibrium branch)");
+  cmd->add_option("--accuracy", args->accuracy, "requested position accuracy [m]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--samples", args->samples, "rows of centerline.csv")
+      ->check(CLI::Range(2, 1000000))
+      ->capture_default_str();
+  cmd->callback([args, exit_code] { *exit_code = RunSimulate(*args); });
+}
+
+}  // namespace cablefit::addin

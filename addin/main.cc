@@ -1,3 +1,0 @@
-#include "cablefit/addin/commands.h"
-
-int main(int argc, char** argv) { return cablefit::addin::RunCommandLine(argc, argv); }

@@ -1,0 +1,84 @@
+// Diagnosis of a recorded cable shape: simulate the nominal set-up from the recorded shape,
+// measure where recording and simulation differ (only where the cable was seen), fit every
+// effect of the catalogue (recording-v1.md) as a parametrised change of the nominal model by
+// Levenberg-Marquardt with warm-started forward solves and multi-start, and choose with the
+// Bayesian information criterion using the estimated noise.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/solver/rod_solution.h"
+#include "cablefit/core/rod/rod_spec.h"
+#include "cablefit/core/solver/statics_solver.h"
+
+namespace cablefit {
+
+/// A recorded centreline as the diagnosis sees it (from a scan or a measured centreline).
+struct ShapeObservation {
+  Eigen::Matrix3Xd points;   // 3 x n [m] centre points, ordered from the first clamp
+  Eigen::VectorXd s;         // n [m] approximate arc length of each point
+  double noise_sigma = 1e-4;  // [m] standard deviation of a centre point (per coordinate)
+  /// Seen arc-length intervals [m]; empty = the whole cable.
+  std::vector<std::pair<double, double>> coverage;
+};
+
+struct ShapeDiagnosisOptions {
+  /// Forward-solve accuracy inside the fits [m] (extrapolated, two levels).
+  double accuracy = 2e-6;
+  /// Levenberg-Marquardt iterations per start.
+  int max_iterations = 30;
+  /// BIC margin a candidate must win by over `none` before it is reported [-].
+  double min_bic_gain = 10.0;
+  /// Only use at most this many observation points (evenly thinned) in the fits.
+  int max_points = 400;
+  /// How far the far clamp's twist about the cable axis may be from the nominal one (the case's
+  /// normal, or the torque-free twist) before it counts as a twist_preload [rad]: the standard
+  /// deviation of the prior on it. 0 = the twist is free in every model (no twist_preload).
+  double twist_sigma = 0.25;
+  ProgressCallback progress;
+
+  bool IsValid(std::string* why) const;
+};
+
+struct EffectCandidate {
+  std::string effect;        // catalogue name
+  double score = 0.0;        // posterior weight in [0, 1] from BIC (higher is better)
+  double bic = 0.0;          // Bayesian information criterion (lower is better)
+  int parameter_count = 0;
+  double max_deviation = 0.0;  // [m] fitted model vs observation, seen points
+  double rms_deviation = 0.0;  // [m]
+  std::map<std::string, double> parameters;
+  std::optional<int> clamp;
+  std::optional<std::pair<double, double>> interval;
+  bool converged = true;
+};
+
+struct ShapeDiagnosis {
+  std::string effect = "none";
+  double confidence = 0.0;
+  std::optional<std::pair<double, double>> interval;  // [m]
+  std::optional<int> clamp;
+  std::map<std::string, double> parameters;   // spec names: curvature, angle, ratio, force, ...
+  std::map<std::string, Vec3> vectors;        // axis, force_vector, direction vectors (world)
+  double baseline_max = 0.0, baseline_rms = 0.0;  // [m] nominal vs observation (seen points)
+  double fitted_max = 0.0, fitted_rms = 0.0;      // [m] fitted vs observation
+  std::string explanation;
+  std::vector<EffectCandidate> candidates;        // best first
+  RodSpec fitted_spec;
+  RodSolution nominal_solution;   // extrapolated centreline (nodes), reactions ...
+  RodSolution fitted_solution;
+  Eigen::VectorXd observation_s;          // n [m] arc length of each used observation point
+  Eigen::VectorXd baseline_deviation;     // n [m] distance of each point to the nominal curve
+  Eigen::VectorXd fitted_deviation;       // n [m] ... to the fitted curve
+  double seconds = 0.0;
+};
+
+/// Throws InvalidInput for an invalid spec or an empty observation.
+ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& observation,
+                             const ShapeDiagnosisOptions& options = {});
+
+}  // namespace cablefit

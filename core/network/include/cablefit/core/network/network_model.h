@@ -1,0 +1,55 @@
+// A rod network compiled into one RodModel (so one Newton system and one stability verdict for
+// the whole harness), plus the bookkeeping that maps it back to branches and junctions.
+//
+// How junctions are modelled (why): a breakout with three or more branches is a rigid body
+// carrying its own frame sample (an item of zero length) at the shared node; every branch end is
+// tied to it by a bending edge whose rest rotation is the drawn relative angle, with the branch's
+// own stiffness over half an element in series with the attachment compliance. A junction of
+// two branches is a splice: the two end elements are joined directly by such an edge, so a
+// network that only splices collinear branches is exactly the rod it represents.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/core/network/network_spec.h"
+#include "cablefit/core/rod/rod_model.h"
+
+namespace cablefit {
+
+struct BranchLayout {
+  std::vector<int> nodes;     // model nodes in order of increasing s (ends may be junction nodes)
+  std::vector<int> elements;  // model elements in order of increasing s
+  Eigen::VectorXd node_s;     // nodes.size() [m] arc length along the branch
+  std::vector<int> supports;  // model support index of each spec support of the branch
+  int first_item = -1, last_item = -1;  // items at the two ends (tied to junctions)
+};
+
+struct JunctionLayout {
+  int node = -1;
+  int item = -1;               // the breakout's frame sample, -1 for a two-branch splice
+  std::vector<int> branches;   // attached branches
+  std::vector<int> branch_end;  // 0: the branch's start is attached, 1: its end
+  std::vector<int> edges;      // per attached branch: its edge to the junction frame (-1 for a splice)
+};
+
+struct NetworkModel {
+  NetworkSpec spec;
+  RodModel rod;
+  std::vector<BranchLayout> branches;
+  std::vector<JunctionLayout> junctions;
+  std::vector<int> support_branch;  // per model support: its branch
+  int num_spec_supports = 0;        // model supports beyond these are contacts
+  double total_length = 0.0;        // [m]
+};
+
+/// Validates the network (throws InvalidInput naming the branch or junction) and compiles it
+/// with elements of about `element_length` [m] (every span at least one element), times
+/// 2^refinement.
+NetworkModel CompileNetworkModel(const NetworkSpec& spec, double element_length,
+                                 int refinement = 0);
+
+/// Validation only (CompileNetworkModel calls it).
+void ValidateNetworkSpec(const NetworkSpec& spec);
+
+}  // namespace cablefit

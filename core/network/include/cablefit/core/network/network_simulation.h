@@ -1,0 +1,70 @@
+// Solving a rod network: one Newton system for the whole harness from its drawn shape, with
+// one-sided frictionless contact against the obstacles by an active set (nodes that would
+// penetrate are held on the tangent plane of the surface; holds that pull are released; planes
+// follow the nearest surface point until nothing changes).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/core/network/network_model.h"
+#include "cablefit/core/solver/rod_solution.h"
+#include "cablefit/core/rod/rod_state.h"
+#include "cablefit/core/solver/statics_solver.h"
+
+namespace cablefit {
+
+struct NetworkOptions {
+  double element_length = 0.01;  // [m]
+  int refinement = 0;            // elements x 2^refinement
+  StaticsOptions statics;
+  /// Contacts are added where the surface comes closer than radius (1 - this fraction of the
+  /// diameter); the reported penetration stays below about this fraction.
+  double contact_tolerance = 0.002;
+  /// Nodes drawn within this fraction of the diameter of a surface start in contact (pulled
+  /// onto it). Kept small: pulling a drawn droop flat onto a panel it only nears can ask an
+  /// inextensible cable for more length than it has; nodes further off find the surface by
+  /// falling onto it.
+  double contact_gap = 0.002;
+  int max_contact_rounds = 100;  // each round is a warm solve of a few Newton iterations
+};
+
+/// What branch b exerts on a junction's body, at the junction node (world frame).
+struct JunctionLoads {
+  std::vector<int> branch;      // attached branches
+  std::vector<int> branch_end;  // 0: the branch's start is attached, 1: its end
+  std::vector<Vec3> force;   // per attached branch [N]
+  std::vector<Vec3> moment;  // per attached branch [N m]
+  Vec3 force_residual = Vec3::Zero();   // sum of branch forces + the junction's weight [N]
+  Vec3 moment_residual = Vec3::Zero();  // sum of branch moments [N m]
+};
+
+struct ContactLoad {
+  int branch = -1;
+  double s = 0.0;                 // [m] along the branch
+  int obstacle = -1;
+  Vec3 point = Vec3::Zero();      // [m] where it acts on the surface
+  Vec3 force = Vec3::Zero();      // [N] exerted by the surface on the cable
+};
+
+struct NetworkSolution {
+  StaticsSummary summary;
+  std::vector<Polyline> branches;          // per branch: node s [m] and positions [m]
+  std::vector<SupportReaction> reactions;  // per spec support, branch by branch
+  std::vector<JunctionLoads> junctions;
+  std::vector<ContactLoad> contacts;
+  double max_penetration = 0.0;  // [m] deepest remaining overlap of cable surface and solids
+  int contact_rounds = 0;
+  int num_elements = 0;
+  bool converged() const { return summary.converged(); }
+};
+
+/// Compiles and solves `spec` starting from the drawn routes. Throws InvalidInput for an invalid
+/// spec; a solver failure is reported in the summary.
+NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& options = {});
+
+/// The drawn shape of a compiled network as a solver state (supports start at the poses the
+/// drawing gives them; the solver moves them to their targets).
+RodState DrawnNetworkState(const NetworkModel& net);
+
+}  // namespace cablefit

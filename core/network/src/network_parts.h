@@ -1,0 +1,22 @@
+// Pieces shared by the network compiler, its validation and its start shape.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/core/network/network_model.h"
+
+namespace cablefit {
+
+std::string BranchLabel(const NetworkSpec& spec, int branch);      // "branch 'name'"
+std::string JunctionLabel(const NetworkSpec& spec, int junction);  // "junction 'name'"
+double TotalLength(const NetworkSpec& spec);                       // [m]
+/// The branch as a single-rod spec (for validation and span breakpoints).
+RodSpec BranchRodSpec(const NetworkSpec& spec, int branch);
+
+/// Frame (w, x, y, z) of every item of the compiled network in its drawn shape: element
+/// tangents along the route's chords, twist-free (parallel transport) along each branch; a
+/// support frame takes its neighbouring element's frame, a junction its first branch's end frame.
+std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net);
+
+}  // namespace cablefit

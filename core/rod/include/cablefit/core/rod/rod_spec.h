@@ -1,0 +1,70 @@
+// The user-editable description of one cable set-up (from case.json, harness.json or CAD).
+// It is plain data; CompileRodModel() validates it and turns it into an immutable RodModel.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cablefit/core/base/geometry_types.h"
+
+namespace cablefit {
+
+enum class SupportKind {
+  kClamp,  ///< position and full frame fixed
+  kClip,   ///< position and tangent fixed, free rotation about the tangent
+  kPin,    ///< position fixed, free rotation
+};
+const char* ToString(SupportKind kind);
+/// Accepts "clamp", "clip", "pin"; throws InvalidInput otherwise.
+SupportKind SupportKindFromString(const std::string& name);
+
+/// A support at arc length `s`. `tangent`/`normal` follow recording-v1 (need not be unit).
+struct SupportSpec {
+  SupportKind kind = SupportKind::kClamp;
+  double s = 0.0;                    // [m]
+  Vec3 position = Vec3::Zero();      // [m]
+  Vec3 tangent = Vec3::UnitX();      // direction of increasing s (clamp, clip)
+  Vec3 normal = Vec3::UnitZ();       // material d1 (clamp)
+  /// Compliant clamp: rotation = compliance * moment, 3x3 in the clamp frame (d1, d2, d3)
+  /// [rad/(N m)]. Absent = rigid. Only meaningful for kClamp.
+  std::optional<Mat3> compliance;
+  /// Sliding support: free translation along its tangent (clamp or clip only).
+  bool sliding = false;
+};
+
+/// A natural (intrinsic) curvature/twist over [s_start, s_end], switched on and off by smooth
+/// ramps of width `ramp` inside the interval. Components in the material frame (d1, d2, d3).
+struct NaturalCurvatureSpec {
+  double s_start = 0.0;  // [m]
+  double s_end = 0.0;    // [m]
+  double ramp = 0.0;     // [m], 0 = sharp
+  Vec3 kappa = Vec3::Zero();  // [1/m] (bending about d1, bending about d2, twist)
+};
+
+/// A dead point load at arc length `s` (world frame).
+struct PointLoadSpec {
+  double s = 0.0;               // [m]
+  Vec3 force = Vec3::Zero();    // [N]
+};
+
+struct MaterialSpec {
+  double bending_stiffness = 0.0;    // EI [N m^2]; isotropic nominal, or the geometric mean
+  double bending_ratio = 1.0;        // B_max / B_min (>= 1); 1 = isotropic
+  double principal_angle = 0.0;      // [rad] angle of the B_max bending axis from d1 about d3
+  double torsional_stiffness = 0.0;  // GJ [N m^2]
+  double linear_density = 0.0;       // [kg/m]
+  double diameter = 0.0;             // [m]
+};
+
+struct RodSpec {
+  std::string name;
+  double length = 0.0;  // [m]
+  MaterialSpec material;
+  Vec3 gravity = Vec3(0, 0, -9.81);  // [m/s^2]
+  std::vector<SupportSpec> supports;
+  std::vector<NaturalCurvatureSpec> natural_curvature;
+  std::vector<PointLoadSpec> point_loads;
+};
+
+}  // namespace cablefit

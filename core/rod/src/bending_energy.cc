@@ -1,0 +1,73 @@
+// Bending and twist energy of the quaternion rod (Lang, Linn & Arnold 2011, eq. for the discrete
+// Darboux vector u = (2/ds) Im(conj(q_a) q_b)). The energy is a polynomial in the quaternion
+// components, so its Euclidean derivatives are exact; they are pulled back to the rotation
+// chart q(theta) = q * (1 - |theta|^2/8, theta/2) + O(theta^3), whose second derivative
+// d2q/dtheta_i dtheta_j = -delta_ij q / 4 gives the extra diagonal term -(g_q . q)/4 I.
+#include <array>
+
+#include "cablefit/core/base/internal/quaternion.h"
+#include "cablefit/core/rod/internal/rod_energy.h"
+
+namespace cablefit {
+namespace {
+
+using Mat34 = Eigen::Matrix<double, 3, 4>;
+using Mat44 = Eigen::Matrix4d;
+
+// P_k(a, b) = a^T Q_k b for the bilinear strain P = Im(conj(a) b).
+const std::array<Mat44, 3>& BilinearStrain() {
+  static const std::array<Mat44, 3> q = [] {
+    std::array<Mat44, 3> out;
+    for (int i = 0; i < 4; ++i) {
+      const Mat34 l = quat::LeftStrain(Eigen::Vector4d::Unit(i));
+      for (int k = 0; k < 3; ++k) out[k].row(i) = l.row(k);
+    }
+    return out;
+  }();
+  return q;
+}
+
+}  // namespace
+
+void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc) {
+  for (const RodEdge& e : model.edges) AddEdgeBendingEnergy(e, state, acc);
+}
+
+void AddEdgeBendingEnergy(const RodEdge& e, const RodState& state, EnergyAccumulator* acc) {
+  const auto& qk = BilinearStrain();
+  {
+    const int ia = e.a, ib = e.b;
+    // With a rest rotation, a's frame enters as q_a * rest: its chart is rotated by R_rest^T,
+    // so a's gradient and Hessian rows are mapped back with R_rest.
+    const Eigen::Vector4d qa = e.has_rest ? quat::Multiply(state.q[ia], e.rest) : state.q[ia];
+    const Eigen::Matrix3d back = e.has_rest ? quat::ToMatrix(e.rest) : Eigen::Matrix3d::Identity();
+    const Eigen::Vector4d& qb = state.q[ib];
+    const Mat34 l = quat::LeftStrain(qa);   // P = l qb
+    const Mat34 m = quat::RightStrain(qb);  // P = m qa
+    const double c = 2.0 / e.ds;
+    const Eigen::Vector3d u = c * (l * qb);
+    const Eigen::Vector3d du = u - state.natural_factor * e.natural;
+    const Eigen::Vector3d mom = e.stiffness * du;  // internal moment, material frame [N m]
+    acc->value += 0.5 * e.ds * du.dot(mom);
+    const Eigen::Vector4d ga = 2.0 * m.transpose() * mom;  // ds * c = 2
+    const Eigen::Vector4d gb = 2.0 * l.transpose() * mom;
+    const Eigen::Matrix<double, 4, 3> ja = quat::ChartJacobian(qa);
+    const Eigen::Matrix<double, 4, 3> jb = quat::ChartJacobian(qb);
+    acc->gradient.segment<3>(3 * ia) += back * (ja.transpose() * ga);
+    acc->gradient.segment<3>(3 * ib) += jb.transpose() * gb;
+    if (!acc->hessian) return;
+    const double w = 4.0 / e.ds;  // ds * c^2
+    const Eigen::Matrix3d km = e.stiffness;
+    const Mat44 haa = w * m.transpose() * km * m;
+    const Mat44 hbb = w * l.transpose() * km * l;
+    Mat44 hab = w * m.transpose() * km * l;
+    for (int k = 0; k < 3; ++k) hab += 2.0 * mom[k] * qk[k];
+    const Eigen::Matrix3d daa =
+        ja.transpose() * haa * ja - 0.25 * ga.dot(qa) * Eigen::Matrix3d::Identity();
+    acc->hessian->Diag(ia) += back * daa * back.transpose();
+    acc->hessian->Diag(ib) += jb.transpose() * hbb * jb - 0.25 * gb.dot(qb) * Eigen::Matrix3d::Identity();
+    acc->hessian->AddOffDiagonal(ia, ib, back * (ja.transpose() * hab * jb));
+  }
+}
+
+}  // namespace cablefit

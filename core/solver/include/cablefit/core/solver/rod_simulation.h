@@ -1,0 +1,75 @@
+// Solving a set-up to a requested accuracy: the statics solver at a sequence of uniformly
+// refined discretisations (each warm-started from the previous), Richardson extrapolation of
+// the second-order error (u(h) = u + C h^2 + O(h^4)), and an error estimate from successive
+// extrapolations. A simulator keeps its levels so that a slightly changed set-up (what a fit
+// does thousands of times) is re-solved warm at the same resolution.
+#pragma once
+
+#include <vector>
+
+#include "cablefit/core/rod/rod_model.h"
+#include "cablefit/core/solver/rod_solution.h"
+#include "cablefit/core/rod/rod_state.h"
+#include "cablefit/core/solver/statics_solver.h"
+
+namespace cablefit {
+
+struct SimulationOptions {
+  /// Requested accuracy of the centreline positions (estimated max error) [m].
+  double accuracy = 1e-6;
+  /// Element length of the coarsest level [m]; 0 = length / 24.
+  double coarse_element_length = 0.0;
+  /// At most this many levels (each doubles the elements).
+  int max_levels = 7;
+  /// At least this many levels (2 gives one extrapolation; 3 also an error estimate of it).
+  int min_levels = 3;
+  StaticsOptions statics;
+
+  bool IsValid(std::string* why) const;
+};
+
+struct SimulationResult {
+  /// The finest level's full solution (frames, internal forces, summary) with its centreline
+  /// and support reactions replaced by the extrapolated ones.
+  RodSolution solution;
+  double estimated_error = 0.0;    // [m] estimated max position error of solution.centerline
+  std::vector<int> level_elements;  // elements per level solved
+  int newton_iterations = 0;        // over all levels
+  double seconds = 0.0;
+  bool converged = false;           // every level converged
+  bool accuracy_met = false;
+};
+
+class RodSimulator {
+ public:
+  explicit RodSimulator(SimulationOptions options = {});
+
+  /// Cold solve: chooses the resolution for the requested accuracy. `initial` (may be null) is
+  /// the shape to start from (any parameterisation; mapped onto [0, length]); without it a smooth
+  /// curve through the supports is used. Throws InvalidInput for an invalid spec.
+  SimulationResult Simulate(const RodSpec& spec, const Polyline* initial = nullptr);
+
+  /// Warm re-solve of a changed spec (same supports in number and order) at the levels of the
+  /// last Simulate, each starting from its last solution.
+  SimulationResult Resimulate(const RodSpec& spec);
+
+  bool has_solution() const { return !states_.empty(); }
+  const SimulationOptions& options() const { return options_; }
+
+ private:
+  SimulationResult Finish(std::vector<StaticsSummary> summaries, double seconds);
+
+  SimulationOptions options_;
+  std::vector<RodModel> models_;
+  std::vector<RodState> states_;
+  std::vector<int> span_elements_;
+  double coarse_h_ = 0.0;
+};
+
+/// Samples an extrapolated node centreline at arc lengths `s` by local cubic interpolation.
+Polyline SampleCenterline(const Polyline& nodes, const Eigen::VectorXd& s);
+
+/// n uniformly spaced arc lengths from 0 to length.
+Eigen::VectorXd UniformArcLengths(double length, int n);
+
+}  // namespace cablefit

@@ -1,0 +1,539 @@
+#include "cablefit/core/solver/statics_solver.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "cablefit/core/rod/internal/block_tree.h"
+#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/errors.h"
+#include "kkt_ldlt.h"
+#include "cablefit/core/base/internal/quaternion.h"
+#include "cablefit/core/rod/internal/rod_energy.h"
+#include "cablefit/core/rod/internal/support_targets.h"
+
+namespace cablefit {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Evaluation {
+  double energy = 0.0;
+  Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
+  Eigen::VectorXd c;
+  SparseJacobian jac;
+  BlockTree hessian;
+};
+
+std::vector<char> FreeMask(const RodModel& model) {
+  std::vector<char> free(3 * model.items.size(), 1);
+  for (size_t i = 0; i < model.items.size(); ++i)
+    for (int d = 0; d < 3; ++d)
+      if (model.items[i].masked[d]) free[3 * i + d] = 0;
+  return free;
+}
+
+void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
+              const Eigen::VectorXd* lambda, const std::vector<char>& free, Evaluation* ev,
+              bool with_jacobian = true) {
+  EnergyAccumulator acc;
+  const int n = static_cast<int>(model.items.size());
+  acc.Reset(model, with_hessian ? &ev->hessian : nullptr);
+  AddBendingEnergy(model, state, &acc);
+  AddLoadEnergy(model, state, &acc);
+  AddSupportSpringEnergy(model, state, &acc);
+  ev->energy = acc.value;
+  ev->gradient = acc.gradient;
+  for (int k = 0; k < 3 * n; ++k)
+    if (!free[k]) ev->gradient[k] = 0.0;
+  if (!with_jacobian) {
+    EvaluatePositionConstraints(model, state, &ev->c, nullptr);
+  } else {
+    EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
+    ev->jac.prune([&free](Eigen::Index, Eigen::Index col, double) { return free[col] != 0; });
+  }
+  if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
+}
+
+double Merit(const RodModel& model, const RodState& state, double nu,
+             const std::vector<char>& free) {
+  Evaluation ev;
+  Evaluate(model, state, false, nullptr, free, &ev, /*with_jacobian=*/false);
+  return ev.energy + nu * ev.c.lpNorm<1>();
+}
+
+// Replaces masked rows/columns by the identity so the tree keeps one uniform block structure.
+void MaskHessian(const std::vector<char>& free, BlockTree* h) {
+  const int n = h->size();
+  for (int i = 0; i < n; ++i) {
+    const int p = h->Parent(i);
+    for (int d = 0; d < 3; ++d) {
+      if (!free[3 * i + d]) {
+        h->Diag(i).row(d).setZero();
+        h->Diag(i).col(d).setZero();
+        h->Diag(i)(d, d) = 1.0;
+        if (p >= 0) h->Coupling(i).row(d).setZero();
+      }
+      if (p >= 0 && !free[3 * p + d]) h->Coupling(i).col(d).setZero();
+    }
+  }
+}
+
+void ShiftFree(const std::vector<char>& free, double mu, BlockTree* h) {
+  for (int i = 0; i < h->size(); ++i)
+    for (int d = 0; d < 3; ++d)
+      if (free[3 * i + d]) h->Diag(i)(d, d) += mu;
+}
+
+void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha, RodState* state) {
+  for (size_t i = 0; i < model.items.size(); ++i) {
+    const Eigen::Vector3d th = alpha * step.segment<3>(3 * i);
+    if (th.squaredNorm() == 0.0) continue;
+    state->q[i] = quat::Multiply(state->q[i], quat::Exp(th)).normalized();
+  }
+  AlignQuaternionSigns(model, state);
+}
+
+struct KktSolve {
+  bool ok = false;
+  int negative_directions = 0;  // of the reduced Hessian (unstable directions on the manifold)
+  Eigen::VectorXd step;         // 3n
+  Eigen::VectorXd lambda;       // m
+};
+
+// The same system through the Schur complement S = C H^-1 C^T (O(n m) + O(m^3)): its inertia
+// is inertia(H) + inertia(-S) and, unlike the block elimination, it can regularise rank-deficient
+// support rows. Used only when KktLdlt reports them.
+KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& ev,
+                                   const std::vector<char>& free, double mu) {
+  KktSolve out;
+  BlockTree h = h_masked;
+  if (mu != 0.0) ShiftFree(free, mu, &h);
+  BlockTreeLdlt ldlt;
+  if (!ldlt.Factorize(h, 0.0)) return out;
+  const int m = static_cast<int>(ev.c.size());
+  const int n3 = static_cast<int>(ev.gradient.size());
+  BlockTreeLdlt::RowMajorMatrix rhs(n3, 1 + m);
+  rhs.col(0) = ev.gradient;
+  if (m > 0) rhs.rightCols(m) = ev.jac.transpose();
+  ldlt.SolveInPlace(rhs);
+  int neg = ldlt.NegativeCount();
+  if (m > 0) {
+    Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
+    s = (0.5 * (s + s.transpose())).eval();
+    const Eigen::VectorXd r = ev.c - ev.jac * rhs.col(0);
+    // S = C H^-1 C^T by LDL^T (O(m^3/3)); its pivots' signs give its inertia (Sylvester).
+    Eigen::LDLT<Eigen::MatrixXd> ldlt_s(s);
+    const Eigen::VectorXd d = ldlt_s.vectorD();
+    const double scale = std::max(1e-300, d.cwiseAbs().maxCoeff());
+    int pos = 0;
+    bool rank_deficient = ldlt_s.info() != Eigen::Success;
+    for (int k = 0; k < m && !rank_deficient; ++k) {
+      if (std::abs(d[k]) <= 1e-12 * scale) rank_deficient = true;
+      if (d[k] > 0) ++pos;
+    }
+    if (!rank_deficient) {
+      out.lambda = ldlt_s.solve(r);
+    } else {
+      // Rank-deficient constraints (a taut straight stretch between two supports cannot change
+      // its end distance to first order) are regularised: the step then leaves those residual
+      // directions to the next iterations instead of failing; a truly over-constrained set-up
+      // still fails on its constraint residual.
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(s);
+      Eigen::VectorXd ev_s = eig.eigenvalues();
+      const double escale = std::max(1e-300, ev_s.cwiseAbs().maxCoeff());
+      pos = 0;
+      for (int k = 0; k < m; ++k) {
+        if (std::abs(ev_s[k]) <= 1e-12 * escale) ev_s[k] = 1e-12 * escale;
+        if (ev_s[k] > 0) ++pos;
+      }
+      out.lambda = eig.eigenvectors() *
+                   (ev_s.cwiseInverse().asDiagonal() * (eig.eigenvectors().transpose() * r));
+    }
+    neg += pos - m;
+    out.step = -(rhs.col(0) + rhs.rightCols(m) * out.lambda);
+  } else {
+    out.lambda.resize(0);
+    out.step = -rhs.col(0);
+  }
+  out.negative_directions = neg;
+  out.ok = true;
+  return out;
+}
+
+// The Newton system by the O(n) block elimination of the whole KKT matrix (kkt_ldlt.h).
+KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const BlockTree& h_masked,
+                  const Evaluation& ev, const std::vector<char>& free, double mu) {
+  switch (kkt->Factorize(model, h_masked, ev.jac, free, mu)) {
+    case KktLdlt::Status::kSingularPivot:
+      return KktSolve{};
+    case KktLdlt::Status::kRankDeficient:
+      return SolveKktBySchurComplement(h_masked, ev, free, mu);
+    case KktLdlt::Status::kOk:
+      break;
+  }
+  KktSolve out;
+  kkt->Solve(ev.gradient, ev.c, &out.step, &out.lambda);
+  out.negative_directions = kkt->NegativeCount() - static_cast<int>(ev.c.size());
+  out.ok = true;
+  return out;
+}
+
+double HessianScale(const BlockTree& h) {
+  double s = 0.0;
+  for (int i = 0; i < h.size(); ++i) s = std::max(s, h.Diag(i).diagonal().cwiseAbs().maxCoeff());
+  return std::max(s, 1e-300);
+}
+
+}  // namespace
+
+KktEvaluation EvaluateKkt(const RodModel& model, const RodState& state,
+                          const Eigen::VectorXd& lambda, bool dense_hessian) {
+  std::vector<char> all_free(3 * model.items.size(), 1);
+  Evaluation ev;
+  Evaluate(model, state, dense_hessian, &lambda, all_free, &ev);
+  KktEvaluation out;
+  out.energy = ev.energy;
+  out.gradient = ev.gradient;
+  out.constraints = ev.c;
+  out.jacobian = Eigen::MatrixXd(ev.jac);
+  if (dense_hessian) {
+    const int n = ev.hessian.size();
+    out.hessian = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+    for (int i = 0; i < n; ++i) {
+      out.hessian.block<3, 3>(3 * i, 3 * i) = ev.hessian.Diag(i);
+      const int p = ev.hessian.Parent(i);
+      if (p < 0) continue;
+      out.hessian.block<3, 3>(3 * i, 3 * p) = ev.hessian.Coupling(i);
+      out.hessian.block<3, 3>(3 * p, 3 * i) = ev.hessian.Coupling(i).transpose();
+    }
+  }
+  return out;
+}
+
+void RotateFrames(const RodModel& model, const Eigen::VectorXd& theta, RodState* state) {
+  ApplyStep(model, theta, 1.0, state);
+}
+
+bool StaticsOptions::IsValid(std::string* why) const {
+  auto fail = [why](const char* msg) {
+    if (why) *why = msg;
+    return false;
+  };
+  if (max_iterations < 1) return fail("max_iterations must be >= 1");
+  if (!(gradient_tolerance > 0)) return fail("gradient_tolerance must be > 0");
+  if (!(constraint_tolerance > 0)) return fail("constraint_tolerance must be > 0");
+  if (!(max_step_rotation > 0)) return fail("max_step_rotation must be > 0");
+  if (max_continuation_steps < 0) return fail("max_continuation_steps must be >= 0");
+  return true;
+}
+
+const char* ToString(TerminationType t) {
+  switch (t) {
+    case TerminationType::kConverged:
+      return "converged";
+    case TerminationType::kNoConvergence:
+      return "no_convergence";
+    case TerminationType::kLineSearchFailure:
+      return "line_search_failure";
+    case TerminationType::kCancelled:
+      return "cancelled";
+  }
+  return "?";
+}
+
+std::string StaticsSummary::BriefReport() const {
+  std::ostringstream os;
+  os << ToString(termination) << ": " << iterations << " Newton iterations, " << continuation_steps
+     << " continuation steps, |grad| " << gradient_norm << " N m, |c| " << constraint_norm
+     << " m, energy " << final_energy << " J, " << (stable ? "stable" : "UNSTABLE") << ", "
+     << seconds * 1e3 << " ms";
+  if (!message.empty()) os << " (" << message << ")";
+  return os.str();
+}
+
+StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
+                                  const StaticsOptions& options) {
+  const auto t0 = Clock::now();
+  StaticsSummary sum;
+  const std::vector<char> free = FreeMask(model);
+  const double L = model.spec.length;
+  const double gtol = options.gradient_tolerance * model.force_scale * L;
+  const double ctol = options.constraint_tolerance * L;
+  if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
+  ApplySupportTargets(model, state);
+  Evaluation ev;
+  KktLdlt kkt_ldlt;  // analysed at the first iteration, reused while the pattern holds
+  double nu = 0.0;
+  bool first = true;
+  for (int iter = 0;; ++iter) {
+    CheckDeadline();  // a batch item's --timeout
+    Evaluate(model, *state, true, &state->lambda, free, &ev);
+    if (first) {
+      sum.initial_energy = ev.energy;
+      first = false;
+    }
+    const Eigen::VectorXd grad_l =
+        model.num_constraints > 0
+            ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * state->lambda)
+            : ev.gradient;
+    sum.gradient_norm = grad_l.lpNorm<Eigen::Infinity>();
+    sum.constraint_norm = ev.c.size() ? ev.c.lpNorm<Eigen::Infinity>() : 0.0;
+    sum.final_energy = ev.energy;
+    sum.iterations = iter;
+    // Round-off floor: a gradient below 1e-12 of the stiffest frame's Hessian entry is as
+    // converged as double precision allows (fine discretisations of stiff cables reach it first).
+    const double gtol_eff = std::max(gtol, 1e-12 * HessianScale(ev.hessian));
+    if (sum.gradient_norm <= gtol_eff && sum.constraint_norm <= ctol) {
+      sum.termination = TerminationType::kConverged;
+      break;
+    }
+    if (iter >= options.max_iterations) {
+      sum.termination = TerminationType::kNoConvergence;
+      sum.message = "iteration limit";
+      break;
+    }
+    MaskHessian(free, &ev.hessian);
+    const double scale = HessianScale(ev.hessian);
+    KktSolve kkt;
+    for (double mu = 0.0;;) {
+      kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
+      if (kkt.ok && kkt.negative_directions == 0) break;
+      mu = mu == 0.0 ? 1e-8 * scale : 10.0 * mu;
+      if (mu > 1e6 * scale) {
+        kkt.ok = false;
+        break;
+      }
+    }
+    if (!kkt.ok) {
+      sum.termination = TerminationType::kLineSearchFailure;
+      sum.message = "KKT system singular (supports over-constrain the cable?)";
+      break;
+    }
+    // Limit the largest frame rotation of one step.
+    double max_rot = 0.0;
+    for (size_t i = 0; i < model.items.size(); ++i)
+      max_rot = std::max(max_rot, kkt.step.segment<3>(3 * i).norm());
+    Eigen::VectorXd step = kkt.step;
+    if (max_rot > options.max_step_rotation) step *= options.max_step_rotation / max_rot;
+    const double step_norm = step.lpNorm<Eigen::Infinity>();
+    if (step_norm < 1e-15 && sum.constraint_norm <= ctol) {
+      sum.termination = TerminationType::kConverged;
+      sum.message = "step below round-off";
+      break;
+    }
+    nu = std::max(nu, 1.5 * (kkt.lambda.size() ? kkt.lambda.lpNorm<Eigen::Infinity>() : 0.0) +
+                          1e-12 * model.force_scale);
+    const double c1 = ev.c.size() ? ev.c.lpNorm<1>() : 0.0;
+    const double phi0 = ev.energy + nu * c1;
+    const double slope = ev.gradient.dot(step) - nu * c1;
+    const RodState start = *state;
+    const double kkt0 = std::max(sum.gradient_norm / gtol, sum.constraint_norm / ctol);
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
+      *state = start;
+      ApplyStep(model, step, alpha, state);
+      const double phi = Merit(model, *state, nu, free);
+      if (phi <= phi0 + 1e-4 * alpha * std::min(slope, 0.0) + 1e-14 * std::abs(phi0)) {
+        accepted = true;
+        break;
+      }
+      if (ls == 0) {
+        // Near the solution the merit can reject good Newton steps (Maratos effect): accept a
+        // full step that reduces the KKT residual markedly.
+        Evaluation trial;
+        Evaluate(model, *state, false, nullptr, free, &trial);
+        const Eigen::VectorXd gl =
+            model.num_constraints > 0
+                ? Eigen::VectorXd(trial.gradient + trial.jac.transpose() * kkt.lambda)
+                : trial.gradient;
+        const double kkt1 =
+            std::max(gl.lpNorm<Eigen::Infinity>() / gtol,
+                     (trial.c.size() ? trial.c.lpNorm<Eigen::Infinity>() : 0.0) / ctol);
+        if (kkt1 < 0.5 * kkt0) {
+          accepted = true;
+          break;
+        }
+      }
+    }
+    if (!accepted) {
+      *state = start;
+      sum.termination = TerminationType::kLineSearchFailure;
+      sum.message = "no step decreased the merit function";
+      break;
+    }
+    state->lambda = kkt.lambda;
+  }
+  if (sum.converged()) EvaluateStability(model, *state, &sum);
+  sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+void EvaluateStability(const RodModel& model, const RodState& state, StaticsSummary* summary) {
+  const std::vector<char> free = FreeMask(model);
+  Evaluation ev;
+  Evaluate(model, state, true, &state.lambda, free, &ev);
+  MaskHessian(free, &ev.hessian);
+  KktLdlt kkt_ldlt;
+  KktSolve kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, 0.0);
+  summary->stable = kkt.ok && kkt.negative_directions == 0;
+  summary->negative_directions = kkt.ok ? kkt.negative_directions : -1;
+}
+
+StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
+                                const StaticsOptions& options);
+StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
+                                     const StaticsOptions& options);
+
+namespace {
+
+// Why a failed solve had no chance: two supports holding position with no more cable between
+// them than their distance (a cable drawn straight between two clamps). An inextensible cable
+// cannot hang there under a transverse load, and the Newton system is singular in that stretch.
+std::string TautStretch(const RodModel& model) {
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const RodSupport& sp = model.supports[k];
+    if (sp.constraint_row < 0 || sp.sliding || sp.contact) continue;
+    const int ref = sp.reference >= 0 ? sp.reference : model.anchor_support;
+    if (ref < 0 || ref == static_cast<int>(k)) continue;
+    const RodSupport& from = model.supports[ref];
+    if (from.sliding || from.contact) continue;
+    double path = 0.0;
+    model.ForEachPathElementFrom(sp.reference >= 0 ? from.node : -1, sp.node,
+                                 [&](int j, int) { path += model.element_length[j]; });
+    const double chord = (sp.position - from.position).norm();
+    if (path > 0 && path <= chord * (1 + 1e-6)) {
+      std::ostringstream os;
+      os.precision(6);
+      os << "the supports at s=" << from.s << " m and s=" << sp.s << " m are " << chord
+         << " m apart with " << path
+         << " m of cable between them: taut, an inextensible cable cannot hang there (give it "
+            "slack or let one slide)";
+      return os.str();
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options) {
+  StaticsSummary sum = SolveStaticsAndEscape(model, state, options);
+  if (!sum.converged() && sum.termination != TerminationType::kCancelled) {
+    const std::string taut = TautStretch(model);
+    if (!taut.empty()) sum.message = taut + "; " + sum.message;
+  }
+  return sum;
+}
+
+StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
+                                     const StaticsOptions& options) {
+  const RodState start = *state;
+  StaticsSummary sum = SolveStaticsFrom(model, state, options);
+  if (!sum.converged() && !options.ramp_loads && sum.termination != TerminationType::kCancelled) {
+    // A start far from any loaded equilibrium (e.g. a default shape under a heavy, anisotropic
+    // load): relax it weightless first and bring the loads in by continuation.
+    RodState retry = start;
+    StaticsOptions ramped = options;
+    ramped.ramp_loads = true;
+    StaticsSummary second = SolveStaticsFrom(model, &retry, ramped);
+    second.iterations += sum.iterations;
+    if (second.converged()) {
+      *state = retry;
+      sum = second;
+    }
+  }
+  if (!options.escape_unstable || !sum.converged() || sum.stable) return sum;
+  // A saddle: small deterministic pseudo-random rotations break the symmetry that held the
+  // solver there; the line search then only goes downhill, towards a stable state.
+  std::mt19937 rng(12345);
+  std::normal_distribution<double> nd(0.0, 1.0);
+  const std::vector<char> free = FreeMask(model);
+  for (double amplitude : {0.01, 0.03, 0.1}) {
+    RodState trial = *state;
+    Eigen::VectorXd kick(3 * model.items.size());
+    for (int k = 0; k < kick.size(); ++k) kick[k] = free[k] ? amplitude * nd(rng) : 0.0;
+    ApplyStep(model, kick, 1.0, &trial);
+    StaticsSummary again = SolveStaticsDirect(model, &trial, options);
+    again.iterations += sum.iterations;
+    if (again.converged() && again.stable && again.final_energy < sum.final_energy) {
+      *state = trial;
+      again.message = "left an unstable equilibrium";
+      return again;
+    }
+  }
+  return sum;
+}
+
+StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
+                                const StaticsOptions& options) {
+  const auto t0 = Clock::now();
+  std::string why;
+  CABLEFIT_CHECK(options.IsValid(&why), why);
+  const RodState start = *state;
+  RodState direct = start;
+  SetSupportTargets(model, 1.0, start, &direct);
+  direct.load_factor = 1.0;
+  direct.natural_factor = 1.0;
+  StaticsSummary sum = SolveStaticsDirect(model, &direct, options);
+  int total_iterations = sum.iterations;
+  if (sum.converged()) {
+    *state = direct;
+    sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return sum;
+  }
+  // Continuation from the start state's own poses (and, if asked, from zero load).
+  RodState cur = start;
+  double t = 0.0, dt = 0.25;
+  int steps = 0;
+  bool at_start = true;
+  while (true) {
+    if (steps >= options.max_continuation_steps || dt < 1e-4) {
+      sum.termination = TerminationType::kNoConvergence;
+      sum.message = "continuation stalled at t=" + std::to_string(t);
+      break;
+    }
+    const double t_next = at_start ? 0.0 : std::min(1.0, t + dt);
+    RodState trial = cur;
+    SetSupportTargets(model, t_next, start, &trial);
+    trial.load_factor = options.ramp_loads ? t_next : 1.0;
+    trial.natural_factor = options.ramp_loads ? t_next : 1.0;
+    StaticsSummary step = SolveStaticsDirect(model, &trial, options);
+    total_iterations += step.iterations;
+    ++steps;
+    if (options.progress && !options.progress(t_next, "continuation")) {
+      sum.termination = TerminationType::kCancelled;
+      sum.message = "cancelled";
+      break;
+    }
+    if (step.converged()) {
+      cur = trial;
+      t = t_next;
+      at_start = false;
+      if (t >= 1.0) {
+        sum = step;
+        *state = cur;
+        break;
+      }
+      if (step.iterations <= 6) dt = std::min(0.5, dt * 1.5);
+    } else {
+      if (at_start) {
+        sum = step;
+        sum.message = "could not relax the initial shape: " + step.message;
+        break;
+      }
+      dt *= 0.5;
+    }
+  }
+  sum.continuation_steps = steps;
+  sum.iterations = total_iterations;
+  sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return sum;
+}
+
+}  // namespace cablefit

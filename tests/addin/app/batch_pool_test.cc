@@ -1,0 +1,56 @@
+#include "cablefit/app/batch_pool.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace cablefit::addin {
+namespace {
+
+TEST(ResolveJobs, ClampsToItemsAndAtLeastOne) {
+  EXPECT_EQ(ResolveJobs(4, 2), 2);
+  EXPECT_EQ(ResolveJobs(1, 10), 1);
+  EXPECT_EQ(ResolveJobs(3, 0), 1);
+  EXPECT_GE(ResolveJobs(0, 100), 1);  // hardware concurrency
+}
+
+TEST(RunBatch, RunsEveryItemOnceAndKeepsFailuresPerItem) {
+  for (int jobs : {1, 3}) {
+    std::vector<std::atomic<int>> calls(20);
+    const auto errors = RunBatch(20, jobs, [&](int i) {
+      ++calls[static_cast<std::size_t>(i)];
+      if (i % 7 == 3) throw std::runtime_error("item " + std::to_string(i));
+    });
+    ASSERT_EQ(errors.size(), 20u);
+    for (int i = 0; i < 20; ++i) {
+      EXPECT_EQ(calls[static_cast<std::size_t>(i)], 1) << i;
+      EXPECT_EQ(errors[static_cast<std::size_t>(i)] != nullptr, i % 7 == 3) << i;
+    }
+    try {
+      std::rethrow_exception(errors[10]);
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "item 10");
+    }
+  }
+}
+
+TEST(RunBatch, RunsInParallel) {
+  // Two items that each wait for the other to start can only finish on two threads.
+  std::atomic<int> started{0};
+  const auto errors = RunBatch(2, 2, [&](int) {
+    ++started;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (started < 2 && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
+    if (started < 2) throw std::runtime_error("ran alone");
+  });
+  EXPECT_EQ(errors[0], nullptr);
+  EXPECT_EQ(errors[1], nullptr);
+}
+
+TEST(RunBatch, NoItemsIsNothing) { EXPECT_TRUE(RunBatch(0, 4, [](int) { FAIL(); }).empty()); }
+
+}  // namespace
+}  // namespace cablefit::addin

@@ -1,0 +1,52 @@
+#include "cablefit/app/report_html.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cablefit/app/report_summary.h"
+
+namespace cablefit::addin {
+namespace {
+
+TEST(ReportHtml, EscapesMarkup) {
+  EXPECT_EQ(HtmlEscape("<a href=\"x\">&'</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
+}
+
+TEST(ReportHtml, FormatsNumbersWithUnits) {
+  EXPECT_EQ(FormatNumber(0.0123), "0.0123");
+  EXPECT_EQ(FormatNumber(1.23456e-6), "1.23e-06");
+  EXPECT_EQ(FormatNumber(NAN), "\u2013");
+  EXPECT_EQ(FormatLength(0.0123), "12.3 mm");
+  EXPECT_EQ(FormatLength(4.5e-6), "4.5 \u00b5m");
+  EXPECT_EQ(FormatLength(1.5), "1.5 m");
+  EXPECT_EQ(FormatDeviation(0.004, "N"), "0.004 N");
+  EXPECT_EQ(FormatParameter(std::acos(-1.0), "rad"), "3.142 rad (180.00\u00b0)");
+  EXPECT_EQ(ParameterUnit("curvature", "", ""), "1/m");
+  EXPECT_EQ(ParameterUnit("stiffness", "", ""), "N m/rad");
+  EXPECT_EQ(ParameterUnit("loop_area", "m", "N"), "N \u00b7 m");
+  EXPECT_EQ(FormatSeconds(125.0), "2 min 5 s");
+}
+
+TEST(RunSummaryHtml, IsSelfContainedSortableAndEscaped) {
+  SummaryRow ok;
+  ok.name = "case-a";
+  ok.link = "case-a/report.html";
+  ok.kind = "shape";
+  ok.effect = "intrinsic_curvature";
+  ok.confidence = 0.9;
+  ok.interval = std::make_pair(0.1, 0.2);
+  SummaryRow bad;
+  bad.name = "in/b/case.json";
+  bad.error = "in/b/scan.ply: truncated <vertex> data";
+  const std::string html = RunSummaryHtml({ok, bad}, 3.0, 2);
+  EXPECT_NE(html.find("<table class=\"sortable\">"), std::string::npos);
+  EXPECT_NE(html.find("href=\"case-a/report.html\""), std::string::npos);
+  EXPECT_NE(html.find("truncated &lt;vertex&gt; data"), std::string::npos);
+  EXPECT_NE(html.find("<script>"), std::string::npos);
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos);
+  EXPECT_EQ(html.find("href=\"http"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cablefit::addin

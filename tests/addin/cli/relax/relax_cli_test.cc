@@ -1,0 +1,386 @@
+// `cablefit relax` end to end through the built binary: the sample harness (STEP and STL), a
+// cable drawn as its own equilibrium comes back unchanged, the clamped-clamped beam's sag, and
+// bad inputs in a batch.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/formats/cad_file.h"
+#include "cablefit/formats/json_util.h"
+#include "cli_runner.h"
+#include "relax_test_util.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+namespace fs = std::filesystem;
+using json::Json;
+using testing::CableNamed;
+using testing::Q;
+using testing::RunCablefit;
+
+fs::path Sample(const std::string& name) { return testing::SourceDir() / "samples/harness" / name; }
+
+void WriteText(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// One cable drawn as a tube along `centreline` (project writer: B-spline spine, swept circle).
+fs::path WriteOneCableStep(const fs::path& path, const Polyline& centreline, double diameter) {
+  HarnessDrawing drawing;
+  DrawnCable cable;
+  cable.name = "test_cable";
+  cable.has_color = true;
+  cable.color = {0.2, 0.4, 0.9};
+  cable.diameter = diameter;
+  cable.centreline = centreline;
+  drawing.cables.push_back(cable);
+  WriteRelaxedStep(path.string(), drawing, {RelaxedCable{0, centreline, diameter}});
+  return path;
+}
+
+TEST(RelaxCli, SampleHarnessStepAndStlWriteEverythingAndTheStepReadsBack) {
+  const fs::path out = testing::FreshTempDir("relax_sample");
+  const auto run =
+      RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " " +
+                  Q(Sample("branched_tubes.stl")) + " --out " + Q(out) + " --close-ups");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  std::printf("%s", run.out.c_str());  // per-cable lines and per-stage times (benchmark figure)
+  for (const char* f : {"legacy_harness.step", "legacy_harness.json",
+                        "legacy_harness-deviation.png", "branched_tubes.step",
+                        "branched_tubes.json", "branched_tubes-deviation.png", "report.html"}) {
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+    EXPECT_GT(fs::file_size(out / f), 1000u) << f;
+  }
+  const HarnessDrawing in = ReadCadFile(Sample("legacy_harness.step").string());
+  const HarnessDrawing back = ReadCadFile((out / "legacy_harness.step").string());
+  ASSERT_EQ(back.cables.size(), in.cables.size());
+  std::map<std::string, SrgbColor> colours;
+  for (const DrawnCable& c : back.cables) colours[c.name] = c.color;
+  for (const DrawnCable& c : in.cables) {
+    ASSERT_TRUE(colours.count(c.name)) << c.name;
+    EXPECT_NEAR(colours[c.name].r, c.color.r, 1.0 / 255) << c.name;
+    EXPECT_NEAR(colours[c.name].g, c.color.g, 1.0 / 255) << c.name;
+    EXPECT_NEAR(colours[c.name].b, c.color.b, 1.0 / 255) << c.name;
+  }
+  EXPECT_EQ(back.solids.size(), in.solids.size());
+
+  const Json j = json::ReadJsonFile((out / "legacy_harness.json").string());
+  EXPECT_EQ(j.at("format"), "cablefit-relax/1");
+  ASSERT_EQ(j.at("cables").size(), in.cables.size());
+  for (const Json& c : j.at("cables")) {
+    const std::string name = c.at("name");
+    EXPECT_TRUE(c.at("solver").at("converged").get<bool>()) << name;
+    EXPECT_TRUE(c.at("material").at("defaulted").get<bool>()) << name;
+    // Two held ends, or one when the other is joined to a breakout.
+    EXPECT_GE(c.at("supports").size(), c.contains("junction") ? 1u : 2u) << name;
+    // Held ends stay at their drawn positions.
+    const Json& rows = c.at("relaxed_centreline").at("rows");
+    const Json& first = c.at("supports").front();
+    if (first.at("s").get<double>() == 0.0) {
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(rows.front()[k + 1].get<double>(), first.at("position")[k].get<double>(), 1e-9);
+    }
+    EXPECT_GT(c.at("deviation").at("max").get<double>(), 0.0) << name;
+    EXPECT_GE(c.at("deviation").at("max").get<double>(), c.at("deviation").at("rms").get<double>());
+    EXPECT_EQ(c.at("supports").front().at("reaction").at("force").size(), 3u);
+  }
+  // Breakout at (0.3, 0, 0): its three branches are solved as one network, the breakout is free
+  // to move (it sags), and the loads the branches put on it balance.
+  for (const char* name : {"trunk", "branch_a", "branch_b"}) {
+    EXPECT_EQ(CableNamed(j, name).value("junction", ""),
+              "solved as one network with the cables it meets at breakout 1")
+        << name;
+  }
+  EXPECT_FALSE(CableNamed(j, "hose").contains("junction"));
+  const Json* network = nullptr;
+  for (const Json& n : j.at("networks"))
+    if (!n.at("junctions").empty()) network = &n;
+  ASSERT_NE(network, nullptr);
+  const Json& breakout = network->at("junctions")[0];
+  EXPECT_EQ(breakout.at("branch_loads").size(), 3u);
+  EXPECT_LT(breakout.at("position")[2].get<double>(), -1e-4);  // drawn at z = 0
+  double biggest = 0.0;
+  for (const Json& l : breakout.at("branch_loads"))
+    biggest = std::max(biggest, std::hypot(l.at("force")[0].get<double>(), l.at("force")[1].get<double>(),
+                                           l.at("force")[2].get<double>()));
+  EXPECT_GT(biggest, 0.0);
+  EXPECT_LT(breakout.at("force_residual").get<double>(), 1e-9 * biggest);
+  EXPECT_LT(breakout.at("moment_residual").get<double>(), 1e-9);
+  // branch_a runs through clip_box: a clip support between its ends.
+  const Json& a = CableNamed(j, "branch_a");
+  bool clipped = false;
+  for (const Json& sp : a.at("supports"))
+    clipped = clipped || (sp.at("kind") == "clip" && sp.at("origin") == "clip 'clip_box'");
+  EXPECT_TRUE(clipped);
+
+  const Json m = json::ReadJsonFile((out / "branched_tubes.json").string());
+  EXPECT_EQ(m.at("cables").size(), 3u);
+  const std::string report = [&] {
+    std::ifstream f(out / "report.html");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+  }();
+  EXPECT_NE(report.find("branch_a"), std::string::npos);
+  EXPECT_NE(report.find("legacy_harness-deviation.png"), std::string::npos);
+  EXPECT_EQ(report.find("http"), std::string::npos);  // self-contained
+  // --close-ups: one picture per cable, file-safe names ("#" replaced), linked from the report.
+  for (const char* f :
+       {"legacy_harness-hose-deviation.png", "branched_tubes-branched_tubes_1-deviation.png"}) {
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+    EXPECT_NE(report.find(f), std::string::npos) << f;
+  }
+}
+
+// A rod's own equilibrium, drawn exactly, is already relaxed: the solve must return it.
+TEST(RelaxCli, CableDrawnAsItsOwnEquilibriumComesBackUnchanged) {
+  // Clamps at the ends of a circular arc of chord 0.4 m and length 0.42 m (sin t / t = 0.4/0.42),
+  // which is also the starting shape; gravity then bends the arch.
+  const double chord = 0.4, length = 0.42;
+  double lo = 1e-3, hi = 1.5;
+  for (int k = 0; k < 100; ++k) {
+    const double t = 0.5 * (lo + hi);
+    (std::sin(t) / t > chord / length ? lo : hi) = t;
+  }
+  const double theta = 0.5 * (lo + hi), radius = 0.5 * length / theta;
+  Polyline arc;
+  arc.points.resize(3, 101);
+  for (int i = 0; i <= 100; ++i) {
+    const double phi = -theta + 2 * theta * i / 100.0;
+    arc.points.col(i) =
+        Vec3(0.5 * chord + radius * std::sin(phi), 0, radius * (std::cos(phi) - std::cos(theta)));
+  }
+  RodSpec spec;
+  spec.name = "test_cable";
+  spec.length = length;
+  spec.material = {0.02, 1.0, 0.0, 0.015, 0.08, 0.006};  // EI, ratio, angle, GJ, kg/m, d
+  SupportSpec a, b;
+  a.position = Vec3(0, 0, 0);
+  a.tangent = Vec3(std::cos(theta), 0, std::sin(theta));
+  a.normal = Vec3(0, 1, 0);
+  b.s = spec.length;
+  b.position = Vec3(chord, 0, 0.0);
+  b.tangent = Vec3(std::cos(theta), 0, -std::sin(theta));
+  b.normal = Vec3(0, 1, 0);
+  spec.supports = {a, b};
+  RodSimulator sim;
+  const SimulationResult truth = sim.Simulate(spec, &arc);
+  ASSERT_TRUE(truth.converged) << truth.solution.summary.message;
+  ASSERT_TRUE(truth.solution.summary.stable);
+  const Polyline drawn =
+      SampleCenterline(truth.solution.centerline, UniformArcLengths(spec.length, 226));
+
+  const fs::path dir = testing::FreshTempDir("relax_equilibrium");
+  WriteOneCableStep(dir / "equilibrium.step", drawn, spec.material.diameter);
+  WriteText(dir / "harness.json", R"({"format": "cablefit-harness/1",
+    "cables": {"test_cable": {"material": {"bending_stiffness": 0.02, "torsional_stiffness": 0.015,
+                                            "linear_density": 0.08}}}})");
+  const auto run = RunCablefit("relax " + Q(dir / "equilibrium.step") + " --out " + Q(dir / "out") +
+                               " --config " + Q(dir / "harness.json") + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json j = json::ReadJsonFile((dir / "out/equilibrium.json").string());
+  const Json& c = CableNamed(j, "test_cable");
+  EXPECT_FALSE(c.at("material").at("defaulted").get<bool>());
+  EXPECT_NEAR(c.at("length").get<double>(), spec.length, 1e-5);
+  EXPECT_LT(c.at("deviation").at("max").get<double>(), 1e-5);
+  // And against the equilibrium itself, point by point at the same arc length fraction.
+  double worst = 0.0;
+  const double relaxed_length = c.at("length").get<double>();
+  for (const Json& row : c.at("relaxed_centreline").at("rows")) {
+    const double s = row[0].get<double>() / relaxed_length * spec.length;
+    const Polyline p = SampleCenterline(truth.solution.centerline, Eigen::VectorXd::Constant(1, s));
+    const Vec3 r(row[1].get<double>(), row[2].get<double>(), row[3].get<double>());
+    worst = std::max(worst, (r - p.points.col(0)).norm());
+  }
+  std::printf("equilibrium drawn -> relaxed: max deviation %.2e m, pointwise %.2e m\n",
+              c.at("deviation").at("max").get<double>(), worst);
+  EXPECT_LT(worst, 1e-5);
+}
+
+// Clamped-clamped beam under its weight (one clamp sliding axially so that no membrane tension
+// builds up, as the linear theory assumes): w_max = q L^4 / (384 EI) (e.g. Roark's Formulas for
+// Stress and Strain, table 8.1 case 2e).
+TEST(RelaxCli, StraightCableSagsByTheClampedClampedBeamFormula) {
+  const double length = 0.5, ei = 0.05, mass = 0.05, g = 9.81;
+  const double q = mass * g;                     // [N/m]
+  ASSERT_LT(q * std::pow(length, 3) / ei, 1.5);  // small load: linear theory holds
+  const double expected = q * std::pow(length, 4) / (384 * ei);
+  Polyline line;
+  line.points.resize(3, 2);
+  line.points << 0.1, 0.1 + length, 0.2, 0.2, 0.05, 0.05;
+  const fs::path dir = testing::FreshTempDir("relax_sag");
+  WriteOneCableStep(dir / "straight.step", line, 0.005);
+  WriteText(dir / "harness.json", R"({"gravity": [0, 0, -9.81], "cables": {"test_cable": {
+    "material": {"bending_stiffness": 0.05, "torsional_stiffness": 0.04, "linear_density": 0.05},
+    "end": {"kind": "clamp", "sliding": true}}}})");
+  const auto run = RunCablefit("relax " + Q(dir / "straight.step") + " --out " + Q(dir / "out") +
+                               " --config " + Q(dir / "harness.json") + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json file = json::ReadJsonFile((dir / "out/straight.json").string());
+  const Json& c = CableNamed(file, "test_cable");
+  const double sag = c.at("deviation").at("max").get<double>();
+  std::printf("clamped-clamped sag %.6e m, closed form %.6e m (rel. %.2e)\n", sag, expected,
+              sag / expected - 1);
+  EXPECT_NEAR(sag, expected, 0.01 * expected);
+  EXPECT_NEAR(c.at("deviation").at("max_at").at("s").get<double>(), 0.5 * length, 0.02 * length);
+  const Json& p = c.at("deviation").at("max_at").at("point");
+  EXPECT_LT(p[2].get<double>(), 0.05);  // downwards
+  // Each clamp carries half the weight.
+  for (const Json& sp : c.at("supports")) {
+    EXPECT_NEAR(sp.at("reaction").at("force")[2].get<double>(), 0.5 * q * length,
+                1e-3 * q * length);
+  }
+}
+
+TEST(RelaxCli, BadInputsGiveOneLineEachAndTheRestOfTheBatchIsDone) {
+  const fs::path dir = testing::FreshTempDir("relax_bad");
+  WriteText(dir / "empty.step", "");
+  {
+    std::ifstream in(Sample("legacy_harness.step"), std::ios::binary);
+    std::string all((std::istreambuf_iterator<char>(in)), {});
+    WriteText(dir / "truncated.step", all.substr(0, all.size() / 3));
+  }
+  {  // only the sample's clips, no cable
+    HarnessDrawing sample = ReadCadFile(Sample("legacy_harness.step").string());
+    WriteRelaxedStep((dir / "clips_only.step").string(), sample, {});
+  }
+  {  // a cube is not a tube
+    const char* cube =
+        "solid cube\n"
+        "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 10 10 0\nvertex 10 0 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 10 0\nvertex 10 10 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 10\nvertex 10 0 10\nvertex 10 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 10\nvertex 10 10 10\nvertex 0 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 10 0 0\nvertex 10 0 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 10 0 10\nvertex 0 0 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 0 1 0\nouter loop\nvertex 0 10 0\nvertex 10 10 10\nvertex 10 10 "
+        "0\nendloop\nendfacet\n"
+        "facet normal 0 1 0\nouter loop\nvertex 0 10 0\nvertex 0 10 10\nvertex 10 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 10 10\nvertex 0 10 "
+        "0\nendloop\nendfacet\n"
+        "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 10\nvertex 0 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 1 0 0\nouter loop\nvertex 10 0 0\nvertex 10 10 0\nvertex 10 10 "
+        "10\nendloop\nendfacet\n"
+        "facet normal 1 0 0\nouter loop\nvertex 10 0 0\nvertex 10 10 10\nvertex 10 0 "
+        "10\nendloop\nendfacet\n"
+        "endsolid cube\n";
+    WriteText(dir / "cube.stl", cube);
+  }
+  const auto run =
+      RunCablefit("relax " + Q(dir / "empty.step") + " " + Q(dir / "truncated.step") + " " +
+                  Q(dir / "clips_only.step") + " " + Q(dir / "cube.stl") + " " +
+                  Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") + " --no-pictures");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  std::printf("%s", run.err.c_str());
+  for (const char* bad : {"empty.step", "clips_only.step", "cube.stl"}) {
+    const std::string prefix = "cablefit: " + (dir / bad).string() + ": ";
+    EXPECT_NE(run.err.find(prefix), std::string::npos) << bad << "\n" << run.err;
+    EXPECT_FALSE(fs::exists(dir / "out" / (fs::path(bad).stem().string() + ".json"))) << bad;
+  }
+  EXPECT_NE(run.err.find("no cable curves or tube solids found"), std::string::npos);
+  // A truncated STEP may still hold some complete entities: it either fails with one line or
+  // is read in part; it never crashes the batch.
+  const bool truncated_failed =
+      run.err.find("cablefit: " + (dir / "truncated.step").string() + ": ") != std::string::npos;
+  EXPECT_NE(truncated_failed, fs::exists(dir / "out/truncated.json"));
+  EXPECT_TRUE(fs::exists(dir / "out/legacy_harness.json"));
+  EXPECT_TRUE(fs::exists(dir / "out/legacy_harness.step"));
+  EXPECT_TRUE(fs::exists(dir / "out/report.html"));
+  EXPECT_NE(run.err.find("failure(s):"), std::string::npos);
+}
+
+TEST(RelaxCli, NothingReadableOrBadUsageExitsWithTwo) {
+  const fs::path dir = testing::FreshTempDir("relax_usage");
+  WriteText(dir / "empty.step", "");
+  auto run = RunCablefit("relax " + Q(dir / "empty.step") + " --out " + Q(dir / "out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("cablefit: " + (dir / "empty.step").string() + ": "), std::string::npos);
+  run = RunCablefit("relax " + Q(dir / "missing.step") + " --out " + Q(dir / "out"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("no such file"), std::string::npos) << run.err;
+  run = RunCablefit("relax --out " + Q(dir / "out"));
+  EXPECT_EQ(run.exit_code, 2);
+  WriteText(dir / "harness.json", R"({"cables": {"x": {"materiall": {}}}})");
+  run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") +
+                    " --config " + Q(dir / "harness.json"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("cables.x.materiall is not a known field"), std::string::npos) << run.err;
+}
+
+TEST(RelaxCli, HarnessJsonSupportsAndMaterialAreUsed) {
+  const fs::path dir = testing::FreshTempDir("relax_config");
+  // An extra pin by point halfway along the hose, the hose's material from a section file.
+  WriteText(dir / "section.json",
+            R"({"format": "cablefit-section/1", "library": ")" +
+                (testing::SourceDir() / "samples/materials/automotive.json").string() +
+                R"(", "components": [{"name": "w", "wire": "FLRY-B 0.5", "position": [0, 0]}]})");
+  WriteText(dir / "harness.json", R"({"min_bend_radius_factor": 1000, "cables": {
+      "hose": {"supports": [{"kind": "pin", "point": [0.3, -0.27, 0.0]}]},
+      "trunk": {"material": {"section": "section.json"}}}})");
+  const auto run =
+      RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") +
+                  " --config " + Q(dir / "harness.json") + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;
+  const Json j = json::ReadJsonFile((dir / "out/legacy_harness.json").string());
+  const Json& hose = CableNamed(j, "hose");
+  ASSERT_EQ(hose.at("supports").size(), 3u);
+  EXPECT_EQ(hose.at("supports")[1].at("kind"), "pin");
+  EXPECT_EQ(hose.at("supports")[1].at("origin"), "harness.json");
+  EXPECT_TRUE(hose.at("min_bend_radius").at("flag").get<bool>());  // 1000 diameters: every bend
+  const Json& trunk = CableNamed(j, "trunk");
+  EXPECT_FALSE(trunk.at("material").at("defaulted").get<bool>());
+  EXPECT_NEAR(trunk.at("diameter").get<double>(), 0.0016, 0.0005);  // the wire's outer diameter
+}
+
+}  // namespace
+}  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+// The sidecar example shipped with the sample harness is valid and is what the output says.
+TEST(RelaxCli, SampleSidecarAppliesToTheSampleHarness) {
+  const fs::path out = testing::FreshTempDir("relax_sidecar");
+  const auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " + Q(out) +
+                               " --config " + Q(Sample("harness.json")) + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json j = json::ReadJsonFile((out / "legacy_harness.json").string());
+  for (const char* name : {"trunk", "sensor_cable", "hose"}) {
+    EXPECT_FALSE(CableNamed(j, name).at("material").at("defaulted").get<bool>()) << name;
+  }
+  EXPECT_TRUE(CableNamed(j, "branch_a").at("material").at("defaulted").get<bool>());
+  EXPECT_FALSE(CableNamed(j, "branch_a").at("diameter_defaulted").get<bool>());  // "default" block
+  EXPECT_NEAR(CableNamed(j, "trunk").at("diameter").get<double>(), 0.012, 1e-12);
+  const Json& end = CableNamed(j, "sensor_cable").at("supports").back();
+  EXPECT_EQ(end.at("kind"), "clip");
+  EXPECT_TRUE(end.at("sliding").get<bool>());
+  EXPECT_EQ(CableNamed(j, "hose").at("supports").size(), 3u);
+  // The same sidecar on the STL, whose tubes have other names: warned about, not a failure.
+  const auto mesh = RunCablefit("relax " + Q(Sample("branched_tubes.stl")) + " --out " + Q(out) +
+                                " --config " + Q(Sample("harness.json")) + " --no-pictures");
+  EXPECT_EQ(mesh.exit_code, 0) << mesh.err;
+  EXPECT_NE(mesh.err.find("cablefit: warning: " + Sample("harness.json").string() +
+                          ": cables.hose matches no cable of the inputs"),
+            std::string::npos)
+      << mesh.err;
+}
+
+}  // namespace
+}  // namespace cablefit
