@@ -87,11 +87,13 @@ void ReadMaterial(const FieldReader& r, CableConfig* c) {
     c->material_source = p.lexically_normal().string();
     return;
   }
-  RequireKnownKeys(r, {"bending_stiffness", "torsional_stiffness", "linear_density", "note"});
+  RequireKnownKeys(r, {"bending_stiffness", "torsional_stiffness", "linear_density",
+                       "axial_stiffness", "note"});
   MaterialSpec m;
   m.bending_stiffness = r.RequirePositive("bending_stiffness");
   m.torsional_stiffness = r.RequirePositive("torsional_stiffness");
   m.linear_density = r.RequireNonNegative("linear_density");
+  if (r.Has("axial_stiffness")) m.axial_stiffness = r.RequirePositive("axial_stiffness");
   c->material = m;
   c->material_source = r.file();
 }

@@ -76,6 +76,7 @@ MaterialSpec DefaultBundleMaterial(double d) {
   m.bending_stiffness = kDefaultBundleModulus * std::numbers::pi * std::pow(d, 4) / 64;
   m.torsional_stiffness = m.bending_stiffness / 1.3;
   m.linear_density = kDefaultBundleDensity * std::numbers::pi * d * d / 4;
+  m.axial_stiffness = kDefaultAxialModulus * std::numbers::pi * d * d / 4;
   return m;
 }
 
@@ -111,6 +112,11 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
         "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)");
   }
   out.spec.material.diameter = diameter;
+  // A cable drawn taut between two supports has a tension only through its stretch: a material
+  // without EA gets the bundle estimate's, which only matters where there is no slack.
+  if (!(out.spec.material.axial_stiffness > 0)) {
+    out.spec.material.axial_stiffness = DefaultBundleMaterial(diameter).axial_stiffness;
+  }
   out.spec.name = drawn.name;
   out.spec.length = length;
   out.spec.gravity = cc.gravity.value_or(config.gravity);
@@ -229,6 +235,33 @@ void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* out) {
   r.min_bend_radius = max_kappa > 0 ? 1.0 / max_kappa : std::numeric_limits<double>::infinity();
   r.bend_limit = min_bend_radius_factor * spec.material.diameter;
   r.bend_flag = r.min_bend_radius < r.bend_limit;
+
+  // Unknown (NaN) when the solution carries no internal force (a cable solved within a network).
+  r.max_tension = sol.internal_force.cols() > 0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+  for (Eigen::Index i = 0; i < sol.internal_force.cols(); ++i) {
+    const double tension = sol.internal_force.col(i).dot(sol.frames[static_cast<size_t>(i)].d3);
+    if (tension > r.max_tension) {
+      r.max_tension = tension;
+      r.max_tension_s = sol.frame_s[i];
+    }
+  }
+  r.stretches.clear();
+  r.taut = false;
+  const SupportSpec* previous = nullptr;
+  for (const SupportSpec& sp : spec.supports) {
+    if (sp.sliding) continue;
+    if (previous != nullptr && sp.s > previous->s) {
+      CableRelaxation::Stretch st;
+      st.s0 = previous->s;
+      st.s1 = sp.s;
+      st.chord = (sp.position - previous->position).norm();
+      st.slack = st.chord > 0 ? (st.s1 - st.s0 - st.chord) / st.chord : 0.0;
+      st.taut = st.slack < kTautSlack;
+      r.taut = r.taut || st.taut;
+      r.stretches.push_back(st);
+    }
+    previous = &sp;
+  }
 }
 
 Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
@@ -242,6 +275,7 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
   j["diameter"] = spec.material.diameter;
   j["diameter_defaulted"] = su.diameter_defaulted;
   j["material"] = {{"bending_stiffness", spec.material.bending_stiffness},
+                   {"axial_stiffness", spec.material.axial_stiffness},
                    {"torsional_stiffness", spec.material.torsional_stiffness},
                    {"linear_density", spec.material.linear_density},
                    {"bending_ratio", spec.material.bending_ratio},
@@ -277,6 +311,15 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
                           {"point", ToJson(at.points.col(0))},
                           {"limit", r.bend_limit},
                           {"flag", r.bend_flag}};
+  j["max_tension"] = {{"force", NumberOrNull(r.max_tension)}, {"s", r.max_tension_s}};
+  Json stretches = Json::array();
+  for (const CableRelaxation::Stretch& st : r.stretches) {
+    stretches.push_back({{"from_s", st.s0}, {"to_s", st.s1}, {"chord", st.chord},
+                         {"slack", st.slack}, {"taut", st.taut}});
+  }
+  j["stretches"] = stretches;
+  j["taut"] = r.taut;
+  j["taut_meaning"] = "a stretch between two position-holding supports has less than 0.5 % slack";
   j["twist_angle"] = NumberOrNull(res.solution.twist_angle);
   j["solver"] = {{"converged", res.converged},
                  {"stable", res.solution.summary.stable},

@@ -5,6 +5,8 @@
 // readers and writers keep global state).
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
@@ -86,14 +88,30 @@ std::vector<std::string> UniqueStems(const std::vector<std::string>& files) {
 }
 
 std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
-  char buf[512];
+  // A bend radius a thousand times the cable's length is a straight cable drawn with round-off.
+  char bend[64];
+  if (!std::isfinite(r.min_bend_radius) || r.min_bend_radius > 1e3 * r.setup.spec.length) {
+    std::snprintf(bend, sizeof bend, "straight");
+  } else {
+    std::snprintf(bend, sizeof bend, "%.1f mm%s", 1e3 * r.min_bend_radius,
+                  r.bend_flag ? " (TOO TIGHT)" : "");
+  }
+  double least_slack = std::numeric_limits<double>::infinity();
+  for (const CableRelaxation::Stretch& st : r.stretches) least_slack = std::min(least_slack, st.slack);
+  char taut[96] = "";
+  if (r.taut) {
+    std::snprintf(taut, sizeof taut, ", TAUT (slack %.3f %% between supports)", 100 * least_slack);
+  }
+  char tension[48] = "not computed";
+  if (std::isfinite(r.max_tension)) std::snprintf(tension, sizeof tension, "%.3g N", r.max_tension);
+  char buf[640];
   std::snprintf(buf, sizeof buf,
                 "%s: %s: L=%.3f m, max deviation %.2f mm at s=%.3f m (rms %.2f mm), min bend "
-                "radius %.1f mm%s, %d supports, %s%s, %.1f ms",
+                "radius %s, max tension %s, %d supports, %s%s%s, %.1f ms",
                 f.stem.c_str(), r.setup.name.c_str(), r.setup.spec.length, 1e3 * r.max_deviation,
-                r.max_deviation_s, 1e3 * r.rms_deviation, 1e3 * r.min_bend_radius,
-                r.bend_flag ? " (TOO TIGHT)" : "", static_cast<int>(r.setup.spec.supports.size()),
-                r.result.solution.summary.stable ? "stable" : "UNSTABLE",
+                r.max_deviation_s, 1e3 * r.rms_deviation, bend, tension,
+                static_cast<int>(r.setup.spec.supports.size()),
+                r.result.solution.summary.stable ? "stable" : "UNSTABLE", taut,
                 r.setup.material_defaulted ? ", default material" : "", 1e3 * r.seconds);
   return buf;
 }

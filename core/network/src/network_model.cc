@@ -247,6 +247,10 @@ NetworkModel CompileNetworkModel(const NetworkSpec& spec, double element_length,
   }
   BuildNodeTree(&m);
   BuildItemTree(&m);
+  m.element_axial_stiffness.resize(ne);
+  for (int j = 0; j < ne; ++j) {
+    m.element_axial_stiffness[j] = spec.branches[element_branch[j]].material.axial_stiffness;
+  }
   AssignConstraintReferences(&m);
   ComputeLoadCoefficients(node_force, &m);
   m.spec.name = spec.name;

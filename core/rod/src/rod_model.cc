@@ -85,7 +85,19 @@ void ValidateRodSpec(const RodSpec& spec, bool require_support) {
   if (!std::isfinite(m.bending_ratio) || m.bending_ratio < 1.0)
     throw InvalidInput("bending ratio B_max/B_min must be a finite number >= 1");
   if (!std::isfinite(m.principal_angle)) throw InvalidInput("principal angle is not finite");
+  if (!std::isfinite(m.axial_stiffness) || m.axial_stiffness < 0)
+    throw InvalidInput("axial stiffness EA must be a finite number >= 0");
   if (!Finite(spec.gravity)) throw InvalidInput("gravity is not finite");
+  // Magnitudes no cable set-up has: refused here, since the solver's scales (the Hessian's size,
+  // the force scale) overflow on them and no answer could be trusted. Each bound is orders
+  // beyond the physical range (a 10 km cable, 1000 g, a 100 t/m bundle, a steel bar's EI).
+  if (spec.length > 1e4) throw InvalidInput("cable length " + Num(spec.length) + " m is beyond 10 km");
+  if (spec.gravity.norm() > 1e4)
+    throw InvalidInput("gravity " + Num(spec.gravity.norm()) + " m/s^2 is beyond 1000 g");
+  if (m.linear_density > 1e5)
+    throw InvalidInput("linear density " + Num(m.linear_density) + " kg/m is beyond 100 t/m");
+  if (m.bending_stiffness > 1e9 || m.torsional_stiffness > 1e9)
+    throw InvalidInput("bending or torsional stiffness beyond 1e9 N m^2");
   if (require_support && spec.supports.empty()) throw InvalidInput("the cable has no support");
   const double tol = 1e-9 * spec.length;
   for (size_t i = 0; i < spec.supports.size(); ++i) {
@@ -278,6 +290,7 @@ RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
   for (int e = 0; e < ne; ++e) model.element_nodes[e] = {e, e + 1};
   BuildNodeTree(&model);
   BuildItemTree(&model);
+  model.element_axial_stiffness = Eigen::VectorXd::Constant(ne, spec.material.axial_stiffness);
   AssignConstraintReferences(&model);
   ComputeLoadCoefficients(node_force, &model);
   model.force_scale = std::max({rho * spec.gravity.norm() * L, load_sum,

@@ -120,6 +120,22 @@ void AssignConstraintReferences(RodModel* model) {
         break;
       }
     }
+    // The stretch's axial compliance: sum h / EA from the reference (or the anchor) to the
+    // support; rigid when any of its elements is inextensible, and always for a contact.
+    sp.compliance = 0.0;
+    if (sp.contact || model->element_axial_stiffness.size() != model->num_elements) continue;
+    const int from = sp.reference >= 0 ? model->supports[sp.reference].node : -1;
+    double compliance = 0.0;
+    bool rigid = false;
+    model->ForEachPathElementFrom(from, sp.node, [&](int j, int) {
+      const double ea = model->element_axial_stiffness[j];
+      if (ea > 0) {
+        compliance += model->element_length[j] / ea;
+      } else {
+        rigid = true;
+      }
+    });
+    if (!rigid) sp.compliance = compliance;
   }
 }
 

@@ -209,6 +209,14 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const BlockTree& h,
                                 0.0);  // |J_k|^2 / |H|: its pivot's size
   for (int b = ni; b < nb; ++b)
     pivot_[b].topLeftCorner(row_count_[b - ni], row_count_[b - ni]).setZero();
+  // A compliant support (an extensible stretch) holds c = C lambda: -C on its rows' diagonal.
+  for (const RodSupport& sp : model.supports) {
+    if (sp.constraint_row < 0 || sp.compliance <= 0) continue;
+    for (int r = sp.constraint_row; r < sp.constraint_row + sp.constraint_rows; ++r) {
+      const int b = block_of_row_[r] - ni;
+      pivot_[ni + b](r - row_first_[b], r - row_first_[b]) -= sp.compliance;
+    }
+  }
   for (Eigen::Matrix3d& e : entry_) e.setZero();
   for (int i = 0; i < ni; ++i)
     if (h_entry_[i] >= 0) entry_[h_entry_[i]] = h.Coupling(i).transpose();

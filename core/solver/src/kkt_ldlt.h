@@ -1,6 +1,8 @@
 // Exact block LDL^T of the Newton system of a rod or rod network,
 //   [H + shift I   J^T] [step  ]     [g]
-//   [J             0  ] [lambda] = - [c],
+//   [J             -C ] [lambda] = - [c],
+// C the diagonal of the supports' axial compliances (RodSupport::compliance, 0
+// for an inextensible cable),
 // in O(n) however many supports hold the cable. H is a block tree (one 3x3
 // block per frame sample, rod_model.h); the rows of support k act only on the
 // frames of its stretch, the cable between it and its reference support

@@ -59,11 +59,39 @@ void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
   if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
 }
 
+// Per constraint row: the axial compliance of its support's stretch [m/N] (0 = rigid row).
+Eigen::VectorXd RowCompliance(const RodModel& model) {
+  Eigen::VectorXd comp = Eigen::VectorXd::Zero(model.num_constraints);
+  for (const RodSupport& sp : model.supports) {
+    if (sp.constraint_row < 0) continue;
+    comp.segment(sp.constraint_row, sp.constraint_rows).setConstant(sp.compliance);
+  }
+  return comp;
+}
+
+// The constraint residual: c on rigid rows, c - C lambda on compliant ones (an extensible
+// stretch is in balance when its end has moved by its stretch, C times its force).
+Eigen::VectorXd ConstraintResidual(const Eigen::VectorXd& c, const Eigen::VectorXd& compliance,
+                                   const Eigen::VectorXd& lambda) {
+  if (c.size() == 0 || lambda.size() != c.size()) return c;
+  return c - compliance.cwiseProduct(lambda);
+}
+
+// The merit of a state: energy, plus for rigid rows the exact penalty nu |c|_1 and for
+// compliant rows their stretch energy c^2 / (2 C), which makes them ordinary energy terms.
+double PenaltyTerms(const Eigen::VectorXd& c, const Eigen::VectorXd& compliance, double nu) {
+  double phi = 0.0;
+  for (Eigen::Index i = 0; i < c.size(); ++i) {
+    phi += compliance[i] > 0 ? 0.5 * c[i] * c[i] / compliance[i] : nu * std::abs(c[i]);
+  }
+  return phi;
+}
+
 double Merit(const RodModel& model, const RodState& state, double nu,
-             const std::vector<char>& free) {
+             const std::vector<char>& free, const Eigen::VectorXd& compliance) {
   Evaluation ev;
   Evaluate(model, state, false, nullptr, free, &ev, /*with_jacobian=*/false);
-  return ev.energy + nu * ev.c.lpNorm<1>();
+  return ev.energy + PenaltyTerms(ev.c, compliance, nu);
 }
 
 // Replaces masked rows/columns by the identity so the tree keeps one uniform block structure.
@@ -109,7 +137,8 @@ struct KktSolve {
 // is inertia(H) + inertia(-S) and, unlike the block elimination, it can regularise rank-deficient
 // support rows. Used only when KktLdlt reports them.
 KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& ev,
-                                   const std::vector<char>& free, double mu) {
+                                   const std::vector<char>& free, double mu,
+                                   const Eigen::VectorXd& compliance) {
   KktSolve out;
   BlockTree h = h_masked;
   if (mu != 0.0) ShiftFree(free, mu, &h);
@@ -125,6 +154,7 @@ KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& 
   if (m > 0) {
     Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
     s = (0.5 * (s + s.transpose())).eval();
+    if (compliance.size() == m) s.diagonal() += compliance;
     const Eigen::VectorXd r = ev.c - ev.jac * rhs.col(0);
     // S = C H^-1 C^T by LDL^T (O(m^3/3)); its pivots' signs give its inertia (Sylvester).
     Eigen::LDLT<Eigen::MatrixXd> ldlt_s(s);
@@ -172,7 +202,7 @@ KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const BlockTree& h_masked
     case KktLdlt::Status::kSingularPivot:
       return KktSolve{};
     case KktLdlt::Status::kRankDeficient:
-      return SolveKktBySchurComplement(h_masked, ev, free, mu);
+      return SolveKktBySchurComplement(h_masked, ev, free, mu, RowCompliance(model));
     case KktLdlt::Status::kOk:
       break;
   }
@@ -265,6 +295,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   const double gtol = options.gradient_tolerance * model.force_scale * L;
   const double ctol = options.constraint_tolerance * L;
   if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
+  const Eigen::VectorXd compliance = RowCompliance(model);
   ApplySupportTargets(model, state);
   Evaluation ev;
   KktLdlt kkt_ldlt;  // analysed at the first iteration, reused while the pattern holds
@@ -282,7 +313,9 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
             ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * state->lambda)
             : ev.gradient;
     sum.gradient_norm = grad_l.lpNorm<Eigen::Infinity>();
-    sum.constraint_norm = ev.c.size() ? ev.c.lpNorm<Eigen::Infinity>() : 0.0;
+    sum.constraint_norm =
+        ev.c.size() ? ConstraintResidual(ev.c, compliance, state->lambda).lpNorm<Eigen::Infinity>()
+                    : 0.0;
     sum.final_energy = ev.energy;
     sum.iterations = iter;
     // Round-off floor: a gradient below 1e-12 of the stiffest frame's Hessian entry is as
@@ -300,7 +333,10 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     MaskHessian(free, &ev.hessian);
     const double scale = HessianScale(ev.hessian);
     KktSolve kkt;
-    for (double mu = 0.0;;) {
+    // Inertia correction. A Hessian that is not finite (loads beyond any physical size) has no
+    // shift that helps: the loop would never reach its bound, so it fails at once.
+    for (double mu = 0.0; std::isfinite(scale);) {
+      CheckDeadline();
       kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
       if (kkt.ok && kkt.negative_directions == 0) break;
       mu = mu == 0.0 ? 1e-8 * scale : 10.0 * mu;
@@ -328,9 +364,19 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     }
     nu = std::max(nu, 1.5 * (kkt.lambda.size() ? kkt.lambda.lpNorm<Eigen::Infinity>() : 0.0) +
                           1e-12 * model.force_scale);
-    const double c1 = ev.c.size() ? ev.c.lpNorm<1>() : 0.0;
-    const double phi0 = ev.energy + nu * c1;
-    const double slope = ev.gradient.dot(step) - nu * c1;
+    double rigid_c1 = 0.0, compliant_slope = 0.0;
+    if (ev.c.size()) {
+      const Eigen::VectorXd jac_step = ev.jac * step;
+      for (Eigen::Index i = 0; i < ev.c.size(); ++i) {
+        if (compliance[i] > 0) {
+          compliant_slope += ev.c[i] / compliance[i] * jac_step[i];
+        } else {
+          rigid_c1 += std::abs(ev.c[i]);
+        }
+      }
+    }
+    const double phi0 = ev.energy + PenaltyTerms(ev.c, compliance, nu);
+    const double slope = ev.gradient.dot(step) + compliant_slope - nu * rigid_c1;
     const RodState start = *state;
     const double kkt0 = std::max(sum.gradient_norm / gtol, sum.constraint_norm / ctol);
     double alpha = 1.0;
@@ -338,7 +384,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
       *state = start;
       ApplyStep(model, step, alpha, state);
-      const double phi = Merit(model, *state, nu, free);
+      const double phi = Merit(model, *state, nu, free, compliance);
       if (phi <= phi0 + 1e-4 * alpha * std::min(slope, 0.0) + 1e-14 * std::abs(phi0)) {
         accepted = true;
         break;
@@ -352,9 +398,12 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
             model.num_constraints > 0
                 ? Eigen::VectorXd(trial.gradient + trial.jac.transpose() * kkt.lambda)
                 : trial.gradient;
-        const double kkt1 =
-            std::max(gl.lpNorm<Eigen::Infinity>() / gtol,
-                     (trial.c.size() ? trial.c.lpNorm<Eigen::Infinity>() : 0.0) / ctol);
+        const double kkt1 = std::max(
+            gl.lpNorm<Eigen::Infinity>() / gtol,
+            (trial.c.size()
+                 ? ConstraintResidual(trial.c, compliance, kkt.lambda).lpNorm<Eigen::Infinity>()
+                 : 0.0) /
+                ctol);
         if (kkt1 < 0.5 * kkt0) {
           accepted = true;
           break;
@@ -398,7 +447,7 @@ namespace {
 std::string TautStretch(const RodModel& model) {
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];
-    if (sp.constraint_row < 0 || sp.sliding || sp.contact) continue;
+    if (sp.constraint_row < 0 || sp.sliding || sp.contact || sp.compliance > 0) continue;
     const int ref = sp.reference >= 0 ? sp.reference : model.anchor_support;
     if (ref < 0 || ref == static_cast<int>(k)) continue;
     const RodSupport& from = model.supports[ref];

@@ -21,10 +21,20 @@ inline constexpr double kDefaultBundleModulus = 75e6;
 /// Mass density of such a bundle over its whole disc [kg/m^3]: copper (8930) at ~10-15 %
 /// fill plus PVC (1400) and voids.
 inline constexpr double kDefaultBundleDensity = 2000.0;
+/// Axial (stretching) modulus of such a bundle over its whole disc [Pa]: along the cable the
+/// copper strands carry the load without slipping, so it is copper's 110 GPa at the ~12 % fill
+/// above, the PVC adding little. Gives EA when harness.json does not.
+inline constexpr double kDefaultAxialModulus = 13e9;
+/// A stretch between two supports is flagged taut below this relative slack (0.5 %): less than
+/// the usual tolerance of a harness's cut lengths, so the built cable may have none at all.
+/// Its tension is then set by its stretch (EA) and the supports' exact positions, not by its
+/// weight, and a small error in either changes it many times over.
+inline constexpr double kTautSlack = 0.005;
 /// Diameter assumed for a bare curve without one in harness.json [m].
 inline constexpr double kDefaultDiameter = 0.008;
 
-/// EI = E pi d^4 / 64, GJ = EI / 1.3 (G = E / 2.6, nu ~ 0.3), mass = rho pi d^2 / 4.
+/// EI = E pi d^4 / 64, GJ = EI / 1.3 (G = E / 2.6, nu ~ 0.3), mass = rho pi d^2 / 4,
+/// EA = E_axial pi d^2 / 4.
 MaterialSpec DefaultBundleMaterial(double diameter);  // diameter [m]
 
 /// The rod set-up of one drawn cable.
@@ -67,6 +77,17 @@ struct CableRelaxation {
   double min_bend_radius_s = 0.0;  ///< [m]
   bool bend_flag = false;          ///< min bend radius < factor * diameter
   double bend_limit = 0.0;         ///< [m] factor * diameter
+  double max_tension = 0.0;        ///< [N] largest axial force along the cable (pull > 0)
+  double max_tension_s = 0.0;      ///< [m]
+  /// The cable between two consecutive supports that hold its position (not sliding).
+  struct Stretch {
+    double s0 = 0.0, s1 = 0.0;  ///< [m] its ends along the cable
+    double chord = 0.0;         ///< [m] distance of the two supports
+    double slack = 0.0;         ///< (cable length - chord) / chord
+    bool taut = false;          ///< slack < kTautSlack
+  };
+  std::vector<Stretch> stretches;
+  bool taut = false;  ///< some stretch is taut
   double seconds = 0.0;
   bool ok() const { return result.converged; }
 };

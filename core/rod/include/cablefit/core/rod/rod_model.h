@@ -72,6 +72,10 @@ struct RodSupport {
   /// One-sided contact with a solid (network models): one row, the distance along frame.d3 (the
   /// surface normal) from the contact plane through `position`.
   bool contact = false;
+  /// [m/N] Axial compliance of the support's stretch, sum of h / EA over the cable between it
+  /// and its reference support: its position rows then hold c = compliance * lambda instead of
+  /// c = 0 (the stretch lengthens under tension). 0 = rigid (inextensible cable, contacts).
+  double compliance = 0.0;
 };
 
 struct RodModel {
@@ -103,6 +107,8 @@ struct RodModel {
   /// sum_j a_j . d3_j (+ const) at load factor 1 [N m].
   std::vector<Vec3> load_coefficient;
   Eigen::VectorXd node_mass;  // (num_elements + 1) [kg] lumped
+  /// num_elements [N] EA of each element; 0 = inextensible. Gives the supports' compliance.
+  Eigen::VectorXd element_axial_stiffness;
   std::vector<std::pair<int, Vec3>> node_loads;  // dead point loads at nodes [N]
   double force_scale = 1.0;   // [N] characteristic force for tolerances
   int num_nodes() const { return static_cast<int>(node_parent.size()); }

@@ -55,6 +55,10 @@ struct MaterialSpec {
   double torsional_stiffness = 0.0;  // GJ [N m^2]
   double linear_density = 0.0;       // [kg/m]
   double diameter = 0.0;             // [m]
+  /// EA [N]: stretching under tension. 0 = inextensible (exact for a cable with slack, where
+  /// the tension is orders below EA); a cable drawn taut between two supports needs it, since
+  /// an inextensible one has no defined tension there.
+  double axial_stiffness = 0.0;
 };
 
 struct RodSpec {
