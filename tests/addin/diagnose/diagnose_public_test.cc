@@ -83,7 +83,7 @@ void CheckDiagnosisJson(const json::Json& j, const RecordingCase& rc) {
 // The public cases, or under sanitizers the force cases and every fourth shape case (linked into
 // a scratch folder): each shape case takes minutes there.
 fs::path CasesToRun(const fs::path& scratch, size_t* count) {
-  const fs::path all = testing::SharedDir() / "cases" / "public";
+  const fs::path all = testing::PublicCasesDir();
   std::vector<fs::path> dirs;
   for (const auto& e : fs::directory_iterator(all)) dirs.push_back(e.path());
   std::sort(dirs.begin(), dirs.end());

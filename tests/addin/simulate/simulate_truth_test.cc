@@ -40,7 +40,7 @@ struct ShapeCase {
 
 std::vector<ShapeCase> PublicShapeCases() {
   std::vector<ShapeCase> out;
-  const fs::path root = testing::SharedDir() / "cases" / "public";
+  const fs::path root = testing::PublicCasesDir();
   std::vector<fs::path> dirs;
   for (const auto& e : fs::directory_iterator(root)) dirs.push_back(e.path());
   std::sort(dirs.begin(), dirs.end());

@@ -37,7 +37,7 @@ ShapeObservation FromScan(const RecordingCase& rc, const std::string& ply) {
 }
 
 TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
-  const fs::path root = testing::SharedDir() / "cases" / "public";
+  const fs::path root = testing::PublicCasesDir();
   std::vector<fs::path> dirs;
   for (const auto& e : fs::directory_iterator(root))
     if (fs::exists(e.path() / "scan.ply")) dirs.push_back(e.path());
