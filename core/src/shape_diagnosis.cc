@@ -1,25 +1,17 @@
-// Shape diagnosis (issue 4). Method:
-// 1. Simulate the nominal set-up from the recorded shape (selects the branch),
-// then fit the one
-//    nuisance parameter every model shares: the twist the far clamp imposes. A
-//    bench sets a clamp's rotation about the cable axis by eye, and a case's
-//    far normal is often not the one its cable has (measured on the public
-//    reference data: it is the start normal projected, and the cable is held
-//    near its torque-free twist instead). So the twist is fitted in every model
-//    under a prior: within twist_sigma of the case's normal or of the
-//    torque-free twist (the far clamp released about its axis). twist_preload
-//    is the same rotation without the prior, so it wins only when the shape
-//    demands a twist far from both.
-// 2. Fit every catalogue effect by Levenberg-Marquardt on the seen points
-// (residual = offset of
-//    each point from its closest point on the simulated curve), warm-starting
-//    every forward solve from the last, multi-start where the problem is not
-//    convex (interval position, contact position, anisotropy angle, both
-//    clamps).
-// 3. Select by BIC with the noise estimated from the best model's residual
-// (floored by the
-//    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by
-//    min_bic_gain.
+// Shape diagnosis. Method:
+// 1. Check that the recording belongs between its clamps (an inextensible cable cannot reach
+//    farther from a clamp than its length; a recording running from the last clamp to the first
+//    is reversed, with a note), then simulate the nominal set-up from the recorded shape (this
+//    selects the equilibrium branch). The clamp frames of the case are taken as given.
+// 2. Fit every catalogue effect by Levenberg-Marquardt on the seen points (residual = offset of
+//    each point from its closest point on the simulated curve), warm-starting every forward solve
+//    from the last, multi-start where the problem is not convex (interval position, contact
+//    position, anisotropy angle and ratio, clamp twist, every clamp).
+// 3. Select by BIC with the noise estimated from the best model's residual (floored by the
+//    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by min_bic_gain.
+// 4. Test whether the best fit explains the recording at all: its residual against the
+//    recording's own noise is a chi-square with 2n - k degrees of freedom. When it exceeds the
+//    99.9 % quantile, nothing in the catalogue explains the recording and the diagnosis says so.
 #include "cablefit/core/shape_diagnosis.h"
 
 #include <Eigen/Geometry>
@@ -47,39 +39,12 @@ struct FitContext {
   double length = 0.0;
   double window = 0.0;
   int curve_samples = 0;
-  // Prior on the nuisance twist (far clamp's rotation about its tangent from
-  // the case's normal).
-  bool twist_prior = false;
-  double twist_free = 0.0;    // [rad] the torque-free rotation
-  double twist_sigma = 0.25;  // [rad] ShapeDiagnosisOptions::twist_sigma
-  double prior_scale = 1e-4;  // [m] the offset one prior standard deviation weighs in the fits
 };
 
 double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
-// Signed distance of the nuisance rotation from the nearer nominal twist, in
-// prior sigmas.
-double TwistPriorDeviation(const FitContext& ctx, double rotation) {
-  const double a = WrapAngle(rotation), b = WrapAngle(rotation - ctx.twist_free);
-  return (std::abs(a) <= std::abs(b) ? a : b) / ctx.twist_sigma;
-}
-
-// Rotation about the clamp's tangent from its normal to the frame the solution
-// holds there.
-double RotationAtClamp(const SupportSpec& clamp, const RodSolution& sol) {
-  const Vec3 t = clamp.tangent.normalized();
-  int k = 0;
-  for (int i = 1; i < sol.frame_s.size(); ++i)
-    if (std::abs(sol.frame_s[i] - clamp.s) < std::abs(sol.frame_s[k] - clamp.s)) k = i;
-  const Frame& f = sol.frames[static_cast<size_t>(k)];
-  // The element's d1 carried onto the clamp's tangent by the smallest rotation.
-  const Vec3 d1 = Eigen::Quaterniond::FromTwoVectors(f.d3, t) * f.d1;
-  const Vec3 n = (clamp.normal - clamp.normal.dot(t) * t).normalized();
-  return std::atan2(n.cross(d1).dot(t), n.dot(d1));
-}
-
 bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eigen::VectorXd* r,
-              CurveProjection* proj = nullptr) {
+              Polyline* shape = nullptr) {
   SimulationResult res;
   try {
     res = sim->Resimulate(spec);
@@ -91,7 +56,7 @@ bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eig
       SampleCenterline(res.solution.centerline, UniformArcLengths(ctx.length, ctx.curve_samples));
   CurveProjection p = ProjectOntoCurve(curve, ctx.points, ctx.s, ctx.window);
   *r = Eigen::Map<const Eigen::VectorXd>(p.offset.data(), p.offset.size());
-  if (proj) *proj = std::move(p);
+  if (shape) *shape = res.solution.centerline;
   return true;
 }
 
@@ -99,62 +64,84 @@ struct Fit {
   const EffectModel* model = nullptr;
   Eigen::VectorXd x;
   double cost = INFINITY;  // 1/2 |offsets|^2 [m^2]
-  double prior = 0.0;      // squared prior deviation of the nuisance twist [-]
+  Polyline shape;          // the fitted centreline (warm start of the final solve)
   bool ok = false;
 };
 
 Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel& m,
-             const Eigen::VectorXd& nuisance, int max_iterations) {
-  const int np = m.physical_parameters;
-  const int nn = static_cast<int>(m.scale.size()) - np;
-  const bool prior = m.has_nuisance && nn > 0 && ctx.twist_prior;
+             int max_iterations) {
   struct Run {
     RodSimulator sim;
     LmResult lm;
   };
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
-      if (!Residual(ctx, &r->sim, m.apply(x), res)) return false;
-      if (prior) {
-        res->conservativeResize(res->size() + 1);
-        (*res)[res->size() - 1] = ctx.prior_scale * TwistPriorDeviation(ctx, x[np]);
-      }
-      return true;
+      return Residual(ctx, &r->sim, m.apply(x), res);
     };
     LmOptions opt;
     opt.max_iterations = iterations;
     r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
   };
-  // Many starts (interval and contact positions, anisotropy angles): a few
-  // iterations each, then only the most promising ones are carried to
-  // convergence.
+  // Many starts (interval and contact positions, anisotropy angles, clamp twists): a few
+  // iterations each, then only the most promising ones are carried to convergence. Starts that
+  // end in the same place are one basin: the survivors are distinct ones.
   const bool screen = m.starts.size() > 2;
   std::vector<Run> runs;
   for (const Eigen::VectorXd& start : m.starts) {
-    Eigen::VectorXd x0(np + nn);
-    x0.head(np) = start;
-    if (nn) x0.tail(nn) = nuisance;
     Run r{base, {}};
-    run(&r, x0, screen ? 4 : max_iterations);
+    run(&r, start, screen ? 4 : max_iterations);
     if (r.lm.ok) runs.push_back(std::move(r));
   }
-  std::sort(runs.begin(), runs.end(),
-            [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
+  auto by_cost = [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; };
+  std::sort(runs.begin(), runs.end(), by_cost);
   if (screen) {
-    if (runs.size() > 2) runs.resize(2);
+    std::vector<Run> kept;
+    for (Run& r : runs) {
+      if (kept.size() >= 3) break;
+      bool same = false;
+      for (const Run& k : kept)
+        same = same || ((r.lm.x - k.lm.x).cwiseQuotient(m.scale).cwiseAbs().maxCoeff() < 1.0);
+      if (!same) kept.push_back(std::move(r));
+    }
+    runs = std::move(kept);
     for (Run& r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
-    std::sort(runs.begin(), runs.end(),
-              [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
+    std::sort(runs.begin(), runs.end(), by_cost);
   }
   Fit best;
   best.model = &m;
   if (!runs.empty()) {
     best.x = runs.front().lm.x;
-    if (prior) best.prior = std::pow(TwistPriorDeviation(ctx, best.x[np]), 2);
-    best.cost = runs.front().lm.cost - 0.5 * std::pow(ctx.prior_scale, 2) * best.prior;
+    best.cost = runs.front().lm.cost;
+    Eigen::VectorXd r;
+    Residual(ctx, &runs.front().sim, m.apply(best.x), &r, &best.shape);
     best.ok = true;
   }
   return best;
+}
+
+// Upper 99.9 % quantile of chi-square with `dof` degrees of freedom (Wilson-Hilferty; relative
+// error below 1e-3 for dof >= 10).
+double ChiSquareQuantile999(double dof) {
+  const double z = 3.0902, a = 2.0 / (9.0 * dof);
+  return dof * std::pow(1.0 - a + z * std::sqrt(a), 3);
+}
+
+// How far the recording is from fitting between the clamps: for every clamp, the largest
+// distance of a recorded point from it minus the farthest the cable could reach from it [m].
+struct Reach {
+  double excess = -INFINITY;  // > 0: some point is out of reach
+  int clamp = 0;
+  double distance = 0.0;
+};
+Reach ReachExcess(const RodSpec& spec, const Eigen::Matrix3Xd& pts) {
+  Reach out;
+  for (size_t k = 0; k < spec.supports.size(); ++k) {
+    const SupportSpec& c = spec.supports[k];
+    const double reach = std::max(c.s, spec.length - c.s);
+    const double d = (pts.colwise() - c.position).colwise().norm().maxCoeff();
+    if (d - reach > out.excess) out = {d - reach, static_cast<int>(k), d};
+  }
+  return out;
 }
 
 // The span where the deviation exceeds half its maximum (seen points only).
@@ -193,27 +180,70 @@ bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
   if (!(accuracy > 0)) return fail("accuracy must be > 0");
   if (max_iterations < 1) return fail("max_iterations must be >= 1");
   if (max_points < 10) return fail("max_points must be >= 10");
-  if (!(twist_sigma >= 0)) return fail("twist_sigma must be >= 0");
   return true;
 }
 
-ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs,
+ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& recorded,
                              const ShapeDiagnosisOptions& options) {
   const auto t0 = Clock::now();
   std::string why;
   if (!options.IsValid(&why)) throw InvalidInput("diagnosis options: " + why);
   ValidateRodSpec(nominal);
-  const int n_all = static_cast<int>(obs.points.cols());
+  const int n_all = static_cast<int>(recorded.points.cols());
   if (n_all < 5) throw InvalidInput("the recording has only " + std::to_string(n_all) + " points");
-  if (!obs.points.allFinite()) throw InvalidInput("the recording has non-finite points");
+  if (!recorded.points.allFinite()) throw InvalidInput("the recording has non-finite points");
   const double L = nominal.length;
   auto progress = [&](double f, const char* stage) {
     if (options.progress && !options.progress(f, stage)) throw InvalidInput("cancelled");
   };
+  ShapeDiagnosis out;
 
-  // Thin the points to a spacing of about two diameters: neighbouring centre
-  // points of a scan share errors, and treating them as independent would
-  // overstate the evidence.
+  // Does the recording belong between these clamps? How far a point may stray beyond the
+  // cable's reach: its radius, the noise, and the uncertainty of where the clamps hold it.
+  const double reach_tolerance =
+      nominal.material.diameter + 10.0 * recorded.noise_sigma + 0.01 * L;
+  ShapeObservation obs = recorded;
+  {
+    const SupportSpec& c0 = nominal.supports.front();
+    const SupportSpec& c1 = nominal.supports.back();
+    const Vec3 first = obs.points.col(0), last = obs.points.col(n_all - 1);
+    // A recording's ends lie at its end clamps (less the unseen margins); a recording listed from
+    // the last clamp to the first has them swapped.
+    double forward = 0.0, reverse = 0.0;
+    if (c0.s <= 1e-6 * L) {
+      forward += (first - c0.position).norm();
+      reverse += (last - c0.position).norm();
+    }
+    if (nominal.supports.size() > 1 && c1.s >= (1 - 1e-6) * L &&
+        (c1.position - c0.position).norm() > reach_tolerance) {
+      forward += (last - c1.position).norm();
+      reverse += (first - c1.position).norm();
+    }
+    if (forward > reach_tolerance && reverse < 0.5 * forward) {
+      obs.points = recorded.points.rowwise().reverse();
+      if (recorded.s.size() == n_all) obs.s = (L - recorded.s.reverse().array()).matrix();
+      obs.coverage.clear();
+      for (auto it = recorded.coverage.rbegin(); it != recorded.coverage.rend(); ++it)
+        obs.coverage.emplace_back(L - it->second, L - it->first);
+      out.notes.push_back(
+          "the recording runs from the last clamp to the first (its ends are " + Mm(forward) +
+          " from their clamps as listed, " + Mm(reverse) + " reversed); it was reversed");
+    }
+  }
+  const Reach reach = ReachExcess(nominal, obs.points);
+  if (reach.excess > reach_tolerance) {
+    const SupportSpec& c = nominal.supports[static_cast<size_t>(reach.clamp)];
+    std::ostringstream os;
+    os << "the recording does not fit its set-up: a recorded point lies "
+       << Fixed(reach.distance, 3) << " m from the clamp at s=" << Fixed(c.s, 3) << " m, but "
+       << Fixed(std::max(c.s, L - c.s), 3)
+       << " m of cable cannot reach farther; check the units (metres), the clamp positions and "
+          "that the recording belongs to this case";
+    throw RecordingMismatch(os.str());
+  }
+
+  // Thin the points to a spacing of about two diameters: neighbouring centre points of a scan
+  // share errors, and treating them as independent would overstate the evidence.
   FitContext ctx;
   ctx.obs = &obs;
   ctx.length = L;
@@ -268,80 +298,30 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
                        nominal_fit_solution.solution.summary.message);
   progress(0.05, "nominal");
 
-  // The torque-free twist: the nominal with the far clamp released about its
-  // axis.
-  const int nuis = NuisanceClampIndex(nominal);
-  ctx.twist_sigma = options.twist_sigma;
-  if (nuis >= 0 && options.twist_sigma > 0) {
-    RodSpec released = nominal;
-    released.supports[static_cast<size_t>(nuis)].kind = SupportKind::kClip;
-    RodSimulator sim = base;
-    const SimulationResult r = sim.Simulate(released, &initial);
-    if (r.converged) {
-      ctx.twist_prior = true;
-      ctx.twist_free = RotationAtClamp(nominal.supports[static_cast<size_t>(nuis)], r.solution);
-      ctx.prior_scale = std::max(obs.noise_sigma, 1e-6);
-    }
-  }
-
-  // Nuisance twist: coarse scan, then it is refined inside every model's fit.
-  Eigen::VectorXd nuisance(nuis >= 0 ? 1 : 0);
-  if (nuis >= 0) {
-    double best = INFINITY, best_a = 0.0;
-    for (int k = -12; k < 12; ++k) {
-      RodSimulator sim = base;
-      RodSpec s = nominal;
-      const double a = k * M_PI / 12;
-      ApplyNuisanceTwist(nuis, a, &s);
-      Eigen::VectorXd r;
-      if (Residual(ctx, &sim, s, &r) && r.squaredNorm() < best) best = r.squaredNorm(), best_a = a;
-    }
-    nuisance[0] = best_a;
-  }
-  {
-    // Re-base the warm start on the nuisance-corrected nominal.
-    RodSpec s = nominal;
-    if (nuis >= 0) ApplyNuisanceTwist(nuis, nuisance[0], &s);
-    Eigen::VectorXd r;
-    RodSimulator sim = base;
-    if (Residual(ctx, &sim, s, &r)) base = sim;
-  }
-  progress(0.1, "twist");
-
   std::vector<double> moments;
   for (const auto& re : nominal_fit_solution.solution.reactions)
     moments.push_back(re.moment.norm());
   std::vector<EffectModel> models = BuildEffectModels(nominal, moments);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
-    if (models[i].effect == "twist_preload") {
-      if (!ctx.twist_prior) {  // without the prior it is the nuisance itself:
-                               // not a candidate
-        fits.emplace_back();
-        continue;
-      }
-      models[i].starts = {nuisance};
-    }
-    Fit f = FitModel(ctx, base, models[i], nuisance, options.max_iterations);
-    if (models[i].effect == "none" && f.ok && f.x.size()) nuisance = f.x.tail(f.x.size());
-    fits.push_back(f);
-    progress(0.1 + 0.8 * (i + 1) / models.size(), models[i].effect.c_str());
+    fits.push_back(FitModel(ctx, base, models[i], options.max_iterations));
+    progress(0.05 + 0.85 * (i + 1) / models.size(), models[i].effect.c_str());
   }
 
-  // Selection: BIC with the noise of the best model (floored by the recording's
-  // noise).
+  // Selection: BIC with the noise of the best model (floored by the recording's noise).
   double best_cost = INFINITY;
-  for (const Fit& f : fits)
-    if (f.ok) best_cost = std::min(best_cost, f.cost);
+  size_t best_fit = 0;
+  for (size_t i = 0; i < fits.size(); ++i)
+    if (fits[i].ok && fits[i].cost < best_cost) best_cost = fits[i].cost, best_fit = i;
   if (!std::isfinite(best_cost)) throw InvalidInput("no model could be fitted to the recording");
   const int dof = 2 * n;  // a point's offset from the curve has two free components
+  const double noise2 = obs.noise_sigma * obs.noise_sigma;
   double sigma2 = 2.0 * best_cost / std::max(1, dof - 6);
-  sigma2 = std::max(sigma2, obs.noise_sigma * obs.noise_sigma);
+  sigma2 = std::max(sigma2, noise2);
   const double log_n = std::log(static_cast<double>(dof));
   auto bic = [&](size_t i) {
-    return 2.0 * fits[i].cost / sigma2 + fits[i].prior + models[i].physical_parameters * log_n;
+    return 2.0 * fits[i].cost / sigma2 + models[i].physical_parameters * log_n;
   };
-  ShapeDiagnosis out;
   std::vector<std::pair<double, size_t>> order;
   // Best fit per effect name (clamp effects keep their best clamp).
   std::map<std::string, size_t> best_of;
@@ -350,6 +330,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
     auto it = best_of.find(models[i].effect);
     if (it == best_of.end() || bic(i) < bic(it->second)) best_of[models[i].effect] = i;
   }
+  if (!best_of.count("none")) throw InvalidInput("the nominal set-up could not be re-solved");
   for (auto& [name, i] : best_of) order.emplace_back(bic(i), i);
   std::sort(order.begin(), order.end());
   const size_t none_index = best_of.at("none");
@@ -370,28 +351,63 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
       c.parameters[models[i].names[k]] = fits[i].x[k];
     out.candidates.push_back(c);
   }
-  // Final solves at full accuracy: nominal (with the fitted twist) and the
-  // chosen model.
+
+  // Does anything explain the recording? The best fit's residual against the recording's own
+  // noise is chi-square with 2n - k degrees of freedom when the model is right.
+  out.adequacy.noise_sigma = obs.noise_sigma;
+  out.adequacy.best_effect = models[best_fit].effect;
+  out.adequacy.points = n;
+  out.adequacy.degrees_of_freedom = dof - models[best_fit].physical_parameters;
+  out.adequacy.chi_square = 2.0 * best_cost / noise2;
+  out.adequacy.limit = ChiSquareQuantile999(out.adequacy.degrees_of_freedom);
+  out.explained = out.adequacy.chi_square <= out.adequacy.limit;
+  if (!out.explained) chosen = order.front().second;
+
+  // Final solves at full accuracy: the nominal from the recorded shape, the chosen model from
+  // its fit's shape (the branch the fit found).
+  RodSimulator fine_nominal;
+  const SimulationResult rn = fine_nominal.Simulate(nominal, &initial);
+  const Eigen::VectorXd samples = UniformArcLengths(L, ctx.curve_samples);
+  const Polyline nominal_curve = SampleCenterline(rn.solution.centerline, samples);
+  const CurveProjection pn = ProjectOntoCurve(nominal_curve, obs.points, s_obs, ctx.window);
+  // Half the squared offsets of the thinned points from a curve (the fits' cost) [m^2].
+  auto thinned_cost = [&](const Polyline& curve) {
+    return 0.5 * ProjectOntoCurve(curve, ctx.points, ctx.s, ctx.window).offset.squaredNorm();
+  };
+  const double nominal_cost = thinned_cost(nominal_curve);
+  // A fit whose accurate solve loses most of what it gained over the nominal (another branch, a
+  // solve that failed) is not a result: it is reported and the next candidate is taken.
+  std::vector<bool> rejected(fits.size(), false);
+  SimulationResult rf;
+  for (;;) {
+    out.fitted_spec = models[chosen].apply(fits[chosen].x);
+    RodSimulator fine_fitted;
+    rf = fine_fitted.Simulate(out.fitted_spec,
+                              fits[chosen].shape.size() > 1 ? &fits[chosen].shape : &initial);
+    if (!rf.converged) rf = RodSimulator().Simulate(out.fitted_spec, &initial);
+    if (chosen == none_index) break;
+    const double gained = fits[none_index].cost - fits[chosen].cost;
+    const double cost = rf.converged ? thinned_cost(SampleCenterline(rf.solution.centerline, samples))
+                                     : INFINITY;
+    if (cost <= nominal_cost - 0.5 * gained) break;
+    rejected[chosen] = true;
+    out.notes.push_back("the " + models[chosen].effect +
+                        " fit did not hold in the accurate solve (" +
+                        (rf.converged ? "it gave back most of its improvement" : "not solved") +
+                        "); the next candidate was taken");
+    size_t next = none_index;
+    for (auto& [b, i] : order)
+      if (!rejected[i] && i != none_index &&
+          (!out.explained || b < none_bic - options.min_bic_gain)) {
+        next = i;
+        break;
+      }
+    chosen = next;
+  }
   const EffectModel& cm = models[chosen];
   const Eigen::VectorXd& cx = fits[chosen].x;
-  RodSpec nominal_twisted = nominal;
-  const Eigen::VectorXd& none_x = fits[none_index].x;
-  // The nominal shown against the recording holds the twist the nominal fit
-  // found, so that the deviation is the effect's; a twist preload is measured
-  // from the torque-free hold.
-  const bool preload = cm.effect == "twist_preload";
-  if (nuis >= 0 && none_x.size())
-    ApplyNuisanceTwist(nuis, preload && ctx.twist_prior ? ctx.twist_free : none_x[0],
-                       &nominal_twisted);
-  out.fitted_spec = cm.apply(cx);
-  RodSimulator fine_nominal, fine_fitted;
-  const SimulationResult rn = fine_nominal.Simulate(nominal_twisted, &initial);
-  const SimulationResult rf = fine_fitted.Simulate(out.fitted_spec, &initial);
   out.nominal_solution = rn.solution;
   out.fitted_solution = rf.solution;
-  const Eigen::VectorXd samples = UniformArcLengths(L, ctx.curve_samples);
-  const CurveProjection pn = ProjectOntoCurve(SampleCenterline(rn.solution.centerline, samples),
-                                              obs.points, s_obs, ctx.window);
   const CurveProjection pf = ProjectOntoCurve(SampleCenterline(rf.solution.centerline, samples),
                                               obs.points, s_obs, ctx.window);
   out.observation_s = pn.s;
@@ -442,11 +458,9 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   } else if (cm.effect == "clamp_orientation") {
     out.interval = mismatch;
     const double angle = std::hypot(cx[0], cx[1]);
+    const SupportSpec& sp = nominal.supports[static_cast<size_t>(*cm.clamp)];
     const Frame f = Frame::FromTangentNormal(
-        nominal_twisted.supports[*cm.clamp].tangent,
-        nominal_twisted.supports[*cm.clamp].kind == SupportKind::kClamp
-            ? nominal_twisted.supports[*cm.clamp].normal
-            : nominal_twisted.supports[*cm.clamp].tangent.unitOrthogonal());
+        sp.tangent, sp.kind == SupportKind::kClamp ? sp.normal : sp.tangent.unitOrthogonal());
     const Vec3 axis = angle > 0 ? Vec3((cx[0] * f.d1 + cx[1] * f.d2) / angle) : Vec3(f.d1);
     out.parameters["angle"] = angle;
     out.vectors["axis"] = axis;
@@ -488,20 +502,13 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   } else if (cm.effect == "twist_preload") {
     out.interval = mismatch;
     const SupportSpec& clamp = nominal.supports[static_cast<size_t>(*cm.clamp)];
-    const double from_case = WrapAngle(cx[0]);
-    // The twist the clamp imposes against the torque-free hold when that is
-    // known (the case's normal is the less reliable reference, see the method
-    // above): the total twist of the fitted cable, whose torque-free state has
-    // none.
-    const double angle = ctx.twist_prior ? rf.solution.twist_angle : from_case;
+    const double angle = WrapAngle(cx[0]);
     const double torque = rf.solution.reactions[static_cast<size_t>(*cm.clamp)].moment.dot(
         clamp.tangent.normalized());
     out.parameters["angle"] = angle;
-    out.parameters["angle_from_case_normal"] = from_case;
     out.parameters["torque"] = torque;
     ex << "The clamp at s=" << Fixed(clamp.s, 3) << " m is rotated " << Fixed(angle * 180 / M_PI, 1)
-       << " deg about the cable axis from a twist-free hold (" << Fixed(from_case * 180 / M_PI, 1)
-       << " deg from the normal in the case): the cable carries a torque of "
+       << " deg about the cable axis from the normal in the case: the cable carries a torque of "
        << Fixed(torque * 1e3, 2) << " mN m" << improve;
   } else if (cm.effect == "clamp_compliance") {
     out.interval = mismatch;
@@ -512,9 +519,23 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
        << "the cable rotate against a rotational stiffness of about " << Fixed(k, 3) << " N m/rad"
        << improve;
   }
-  if (nuis >= 0 && cx.size() > cm.physical_parameters)
-    out.parameters["far_clamp_twist"] = cx[cx.size() - 1];
-  out.explanation = ex.str();
+  if (!out.explained) {
+    // A best fit that leaves far more than the noise is not a diagnosis: say what it leaves and
+    // what to check instead of a confident story.
+    out.confidence = std::min(out.confidence, 0.1);
+    std::ostringstream nx;
+    nx << "No effect of the catalogue explains the recording: the best fit (" << cm.effect
+       << ") leaves a max deviation of " << Mm(out.fitted_max) << " (rms " << Mm(out.fitted_rms)
+       << ") against a noise of " << Mm(obs.noise_sigma) << " (chi-square "
+       << Fixed(out.adequacy.chi_square, 0) << " for " << out.adequacy.degrees_of_freedom
+       << " degrees of freedom, 99.9 % limit " << Fixed(out.adequacy.limit, 0)
+       << "). Check the set-up: the clamps (positions, directions, whether every clamp is "
+          "listed), the units of the recording and that it belongs to this case. Best candidate: "
+       << ex.str();
+    out.explanation = nx.str();
+  } else {
+    out.explanation = ex.str();
+  }
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   progress(1.0, "done");
   return out;
