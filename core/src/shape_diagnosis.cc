@@ -10,8 +10,9 @@
 // 3. Select by BIC with the noise estimated from the best model's residual (floored by the
 //    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by min_bic_gain.
 // 4. Test whether the best fit explains the recording at all: its residual against the
-//    recording's own noise is a chi-square with 2n - k degrees of freedom. When it exceeds the
-//    99.9 % quantile, nothing in the catalogue explains the recording and the diagnosis says so.
+//    recording's own noise (with an allowance for errors a noise estimate misses) is a
+//    chi-square with 2n - k degrees of freedom. When it exceeds the 99.9 % quantile, nothing in
+//    the catalogue explains the recording and the diagnosis says so.
 #include "cablefit/core/shape_diagnosis.h"
 
 #include <Eigen/Geometry>
@@ -65,14 +66,16 @@ struct Fit {
   Eigen::VectorXd x;
   double cost = INFINITY;  // 1/2 |offsets|^2 [m^2]
   Polyline shape;          // the fitted centreline (warm start of the final solve)
+  int branch = 0;          // which equilibrium of the nominal the fit started from
   bool ok = false;
 };
 
-Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel& m,
+Fit FitModel(const FitContext& ctx, const std::vector<RodSimulator>& bases, const EffectModel& m,
              int max_iterations) {
   struct Run {
     RodSimulator sim;
     LmResult lm;
+    int branch = 0;
   };
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
@@ -87,11 +90,12 @@ Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel&
   // end in the same place are one basin: the survivors are distinct ones.
   const bool screen = m.starts.size() > 2;
   std::vector<Run> runs;
-  for (const Eigen::VectorXd& start : m.starts) {
-    Run r{base, {}};
-    run(&r, start, screen ? 4 : max_iterations);
-    if (r.lm.ok) runs.push_back(std::move(r));
-  }
+  for (size_t b = 0; b < bases.size(); ++b)
+    for (const Eigen::VectorXd& start : m.starts) {
+      Run r{bases[b], {}, static_cast<int>(b)};
+      run(&r, start, screen ? 4 : max_iterations);
+      if (r.lm.ok) runs.push_back(std::move(r));
+    }
   auto by_cost = [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; };
   std::sort(runs.begin(), runs.end(), by_cost);
   if (screen) {
@@ -100,7 +104,8 @@ Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel&
       if (kept.size() >= 3) break;
       bool same = false;
       for (const Run& k : kept)
-        same = same || ((r.lm.x - k.lm.x).cwiseQuotient(m.scale).cwiseAbs().maxCoeff() < 1.0);
+        same = same || (r.branch == k.branch &&
+                        (r.lm.x - k.lm.x).cwiseQuotient(m.scale).cwiseAbs().maxCoeff() < 1.0);
       if (!same) kept.push_back(std::move(r));
     }
     runs = std::move(kept);
@@ -112,6 +117,7 @@ Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel&
   if (!runs.empty()) {
     best.x = runs.front().lm.x;
     best.cost = runs.front().lm.cost;
+    best.branch = runs.front().branch;
     Eigen::VectorXd r;
     Residual(ctx, &runs.front().sim, m.apply(best.x), &r, &best.shape);
     best.ok = true;
@@ -180,6 +186,7 @@ bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
   if (!(accuracy > 0)) return fail("accuracy must be > 0");
   if (max_iterations < 1) return fail("max_iterations must be >= 1");
   if (max_points < 10) return fail("max_points must be >= 10");
+  if (!(noise_allowance >= 1.0)) return fail("noise_allowance must be >= 1");
   return true;
 }
 
@@ -296,6 +303,46 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   if (!nominal_fit_solution.converged)
     throw InvalidInput("the nominal set-up could not be solved from the recorded shape: " +
                        nominal_fit_solution.solution.summary.message);
+  // Other equilibria of the nominal. A cable that sags little, or hangs near a fold, can rest in
+  // another equilibrium than the one the recorded shape leads the solver to (an effect can tip
+  // it over): the fits also start from the solver's own start (clamps joined smoothly, loads
+  // continued) and from the recorded sag mirrored through the chord, when those settle visibly
+  // elsewhere (20 noise sigmas: far beyond the recording's scatter).
+  std::vector<RodSimulator> bases{base};
+  std::vector<std::string> branch_names{"the recorded shape"};
+  {
+    std::vector<Polyline> shapes{nominal_fit_solution.solution.centerline};
+    const Eigen::VectorXd at = UniformArcLengths(L, 101);
+    auto try_branch = [&](const Polyline* start, const char* name) {
+      RodSimulator sim(fit_opt);
+      SimulationResult r;
+      try {
+        r = sim.Simulate(nominal, start);
+      } catch (const InvalidInput&) {
+        return;
+      }
+      if (!r.converged || !r.solution.summary.stable) return;
+      const Eigen::Matrix3Xd p = SampleCenterline(r.solution.centerline, at).points;
+      for (const Polyline& q : shapes)
+        if ((SampleCenterline(q, at).points - p).colwise().norm().maxCoeff() <
+            20.0 * obs.noise_sigma)
+          return;
+      shapes.push_back(r.solution.centerline);
+      bases.push_back(sim);
+      branch_names.push_back(name);
+    };
+    try_branch(nullptr, "the solver's own start");
+    if (nominal.supports.size() > 1) {
+      const Vec3 a = nominal.supports.front().position, b = nominal.supports.back().position;
+      if ((b - a).norm() > 1e-9) {
+        const Eigen::AngleAxisd half_turn(M_PI, (b - a).normalized());
+        Polyline mirrored = initial;
+        for (int i = 0; i < mirrored.size(); ++i)
+          mirrored.points.col(i) = a + half_turn * (Vec3(initial.points.col(i)) - a);
+        try_branch(&mirrored, "the recorded sag mirrored through the chord");
+      }
+    }
+  }
   progress(0.05, "nominal");
 
   std::vector<double> moments;
@@ -304,15 +351,14 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   std::vector<EffectModel> models = BuildEffectModels(nominal, moments);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
-    fits.push_back(FitModel(ctx, base, models[i], options.max_iterations));
+    fits.push_back(FitModel(ctx, bases, models[i], options.max_iterations));
     progress(0.05 + 0.85 * (i + 1) / models.size(), models[i].effect.c_str());
   }
 
   // Selection: BIC with the noise of the best model (floored by the recording's noise).
   double best_cost = INFINITY;
-  size_t best_fit = 0;
   for (size_t i = 0; i < fits.size(); ++i)
-    if (fits[i].ok && fits[i].cost < best_cost) best_cost = fits[i].cost, best_fit = i;
+    if (fits[i].ok) best_cost = std::min(best_cost, fits[i].cost);
   if (!std::isfinite(best_cost)) throw InvalidInput("no model could be fitted to the recording");
   const int dof = 2 * n;  // a point's offset from the curve has two free components
   const double noise2 = obs.noise_sigma * obs.noise_sigma;
@@ -353,14 +399,25 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   }
 
   // Does anything explain the recording? The best fit's residual against the recording's own
-  // noise is chi-square with 2n - k degrees of freedom when the model is right.
-  out.adequacy.noise_sigma = obs.noise_sigma;
-  out.adequacy.best_effect = models[best_fit].effect;
-  out.adequacy.points = n;
-  out.adequacy.degrees_of_freedom = dof - models[best_fit].physical_parameters;
-  out.adequacy.chi_square = 2.0 * best_cost / noise2;
-  out.adequacy.limit = ChiSquareQuantile999(out.adequacy.degrees_of_freedom);
-  out.explained = out.adequacy.chi_square <= out.adequacy.limit;
+  // noise is chi-square with 2n - k degrees of freedom when the model is right. Fits set aside
+  // below (they did not hold in the accurate solve) do not count.
+  std::vector<bool> rejected(fits.size(), false);
+  auto assess = [&] {
+    size_t best = none_index;
+    for (size_t i = 0; i < fits.size(); ++i)
+      if (fits[i].ok && !rejected[i] && fits[i].cost < fits[best].cost) best = i;
+    ShapeAdequacy& a = out.adequacy;
+    a.noise_sigma = obs.noise_sigma;
+    a.best_effect = models[best].effect;
+    a.points = n;
+    a.degrees_of_freedom = dof - models[best].physical_parameters;
+    a.noise_allowance = options.noise_allowance;
+    a.chi_square =
+        2.0 * fits[best].cost / (noise2 * options.noise_allowance * options.noise_allowance);
+    a.limit = ChiSquareQuantile999(a.degrees_of_freedom);
+    out.explained = a.chi_square <= a.limit;
+  };
+  assess();
   if (!out.explained) chosen = order.front().second;
 
   // Final solves at full accuracy: the nominal from the recorded shape, the chosen model from
@@ -377,7 +434,6 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   const double nominal_cost = thinned_cost(nominal_curve);
   // A fit whose accurate solve loses most of what it gained over the nominal (another branch, a
   // solve that failed) is not a result: it is reported and the next candidate is taken.
-  std::vector<bool> rejected(fits.size(), false);
   SimulationResult rf;
   for (;;) {
     out.fitted_spec = models[chosen].apply(fits[chosen].x);
@@ -395,10 +451,11 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
                         " fit did not hold in the accurate solve (" +
                         (rf.converged ? "it gave back most of its improvement" : "not solved") +
                         "); the next candidate was taken");
+    assess();
     size_t next = none_index;
     for (auto& [b, i] : order)
-      if (!rejected[i] && i != none_index &&
-          (!out.explained || b < none_bic - options.min_bic_gain)) {
+      if (!rejected[i] && (out.explained ? i != none_index && b < none_bic - options.min_bic_gain
+                                         : true)) {
         next = i;
         break;
       }
@@ -406,6 +463,11 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   }
   const EffectModel& cm = models[chosen];
   const Eigen::VectorXd& cx = fits[chosen].x;
+  if (fits[chosen].branch > 0)
+    out.notes.push_back("the " + cm.effect + " fit started from another equilibrium of the " +
+                        "nominal set-up (solved from " +
+                        branch_names[static_cast<size_t>(fits[chosen].branch)] +
+                        ") than the one the recorded shape leads to");
   out.nominal_solution = rn.solution;
   out.fitted_solution = rf.solution;
   const CurveProjection pf = ProjectOntoCurve(SampleCenterline(rf.solution.centerline, samples),
@@ -510,6 +572,19 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     ex << "The clamp at s=" << Fixed(clamp.s, 3) << " m is rotated " << Fixed(angle * 180 / M_PI, 1)
        << " deg about the cable axis from the normal in the case: the cable carries a torque of "
        << Fixed(torque * 1e3, 2) << " mN m" << improve;
+    // For a cable that bends alike in every direction the shape fixes only the twist between the
+    // clamps: the same rotation the other way at another clamp fits as well.
+    for (size_t i = 0; i < fits.size(); ++i)
+      if (fits[i].ok && i != chosen && models[i].effect == "twist_preload" &&
+          bic(i) < bic(chosen) + 2.0) {
+        ex << " The shape fits as well with the clamp at s="
+           << Fixed(nominal.supports[static_cast<size_t>(*models[i].clamp)].s, 3)
+           << " m rotated instead (" << Fixed(WrapAngle(fits[i].x[0]) * 180 / M_PI, 1)
+           << " deg): it fixes only the twist between the clamps, so which one was turned "
+              "cannot be told from it.";
+        out.parameters["alternative_clamp"] = *models[i].clamp;
+        break;
+      }
   } else if (cm.effect == "clamp_compliance") {
     out.interval = mismatch;
     const double k = std::exp(-cx[0]);
@@ -526,7 +601,8 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     std::ostringstream nx;
     nx << "No effect of the catalogue explains the recording: the best fit (" << cm.effect
        << ") leaves a max deviation of " << Mm(out.fitted_max) << " (rms " << Mm(out.fitted_rms)
-       << ") against a noise of " << Mm(obs.noise_sigma) << " (chi-square "
+       << ") against a noise of " << Mm(obs.noise_sigma) << " (chi-square with "
+       << Fixed(options.noise_allowance, 1) << " times that noise: "
        << Fixed(out.adequacy.chi_square, 0) << " for " << out.adequacy.degrees_of_freedom
        << " degrees of freedom, 99.9 % limit " << Fixed(out.adequacy.limit, 0)
        << "). Check the set-up: the clamps (positions, directions, whether every clamp is "
@@ -534,6 +610,13 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
        << ex.str();
     out.explanation = nx.str();
   } else {
+    // A close runner-up is part of the answer: the scores alone do not separate them.
+    for (const EffectCandidate& c : out.candidates) {
+      if (c.effect == out.effect || c.score < 0.25) continue;
+      ex << " The recording hardly separates it from " << c.effect << " (scores "
+         << Fixed(out.confidence, 2) << " and " << Fixed(c.score, 2) << ").";
+      break;
+    }
     out.explanation = ex.str();
   }
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

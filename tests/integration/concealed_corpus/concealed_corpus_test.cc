@@ -170,7 +170,10 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
   ScanCenterlineOptions so;
   so.diameter = h.truth.material.diameter;
   try {
-    const ScanCenterline sc = ExtractScanCenterline(scan.cloud, so, ScanGuide::FromRodSpec(told));
+    // The scan is traced along the set-up it was taken on when the diagnosis is told too few
+    // clamps to guide it (as a measured centreline would need no guide).
+    const ScanCenterline sc = ExtractScanCenterline(
+        scan.cloud, so, ScanGuide::FromRodSpec(told.supports.size() > 1 ? told : h.truth));
     ShapeObservation obs;
     obs.points = sc.points;
     obs.s = sc.s;
@@ -185,6 +188,7 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
                 dg.baseline_max * 1e3, dg.fitted_max * 1e3, out.improvement,
                 dg.adequacy.chi_square / dg.adequacy.limit, out.clamp_right ? "" : " WRONG CLAMP",
                 dg.seconds);
+    for (const std::string& note : dg.notes) std::printf("          note: %s\n", note.c_str());
     if (out.got != label) {  // how close the hidden effect came
       for (const EffectCandidate& c : dg.candidates)
         std::printf("          candidate %-24s bic %.1f\n", c.effect.c_str(), c.bic);

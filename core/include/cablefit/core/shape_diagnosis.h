@@ -36,6 +36,13 @@ struct ShapeDiagnosisOptions {
   double min_bic_gain = 10.0;
   /// Only use at most this many observation points (evenly thinned) in the fits.
   int max_points = 400;
+  /// The adequacy test lets the best fit scatter up to this many times the recording's own
+  /// noise estimate [-]: a scan's centre noise comes from the scatter of its circle fits and
+  /// misses the errors the slices share (partial arcs, outliers near the fit), and a measured
+  /// centreline's from its fourth differences, which miss smooth errors. Measured: right models
+  /// leave 1.0-2.0 times the estimate on the public scans and the concealed corpus; a set-up that
+  /// does not match leaves hundreds.
+  double noise_allowance = 3.0;
   ProgressCallback progress;
 
   bool IsValid(std::string* why) const;
@@ -59,9 +66,10 @@ struct ShapeAdequacy {
   std::string best_effect;     // the model with the smallest residual
   int points = 0;              // thinned points the fits used
   int degrees_of_freedom = 0;  // 2 points - the best model's parameters
-  double chi_square = 0.0;     // |offsets|^2 / noise_sigma^2 of the best fit
+  double chi_square = 0.0;     // |offsets|^2 / (noise_allowance noise_sigma)^2 of the best fit
   double limit = 0.0;          // 99.9 % quantile of chi-square at those degrees of freedom
   double noise_sigma = 0.0;    // [m] the recording's centre-point noise
+  double noise_allowance = 1.0;  // ShapeDiagnosisOptions::noise_allowance
 };
 
 struct ShapeDiagnosis {
