@@ -70,7 +70,7 @@ std::string ParameterUnit(const std::string& name, const std::string& x_unit,
                           const std::string& y_unit) {
   if (name == "curvature") return "1/m";
   if (name == "direction" || name == "angle" || name == "principal_angle" ||
-      name == "total_bend_angle" || name == "rotation_at_clamp")
+      name == "total_bend_angle" || name == "rotation_at_clamp" || name == "alternative_angle")
     return "rad";
   if (name == "ratio" || name == "axis") return "\u2013";
   if (name == "s" || name == "s_start" || name == "s_end" || name == "width") return "m";

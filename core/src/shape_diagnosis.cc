@@ -461,6 +461,22 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
       }
     chosen = next;
   }
+  if (std::find(rejected.begin(), rejected.end(), true) != rejected.end()) {
+    // Scores among the fits that held: a set-aside fit weighs nothing.
+    double best_held = INFINITY, sum = 0.0;
+    for (auto& [b, i] : order)
+      if (!rejected[i]) best_held = std::min(best_held, b);
+    for (EffectCandidate& c : out.candidates) {
+      const size_t i = best_of.at(c.effect);
+      c.score = rejected[i] ? 0.0 : std::exp(-0.5 * (c.bic - best_held));
+      sum += c.score;
+    }
+    for (EffectCandidate& c : out.candidates) c.score /= sum;
+    std::stable_sort(out.candidates.begin(), out.candidates.end(),
+                     [](const EffectCandidate& a, const EffectCandidate& b) {
+                       return a.score > b.score;
+                     });
+  }
   const EffectModel& cm = models[chosen];
   const Eigen::VectorXd& cx = fits[chosen].x;
   if (fits[chosen].branch > 0)
@@ -487,9 +503,9 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   if (chosen == none_index) {
     // Confidence that nothing is missing: the weight of `none` against the best
     // alternative.
-    const double alt = order.front().second == none_index
-                           ? (order.size() > 1 ? order[1].first : INFINITY)
-                           : order.front().first;
+    double alt = INFINITY;
+    for (auto& [b, i] : order)
+      if (i != none_index && !rejected[i]) alt = std::min(alt, b);
     out.confidence = 1.0 / (1.0 + std::exp(-0.5 * (alt - none_bic)));
   }
   out.clamp = cm.clamp;
@@ -572,19 +588,24 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     ex << "The clamp at s=" << Fixed(clamp.s, 3) << " m is rotated " << Fixed(angle * 180 / M_PI, 1)
        << " deg about the cable axis from the normal in the case: the cable carries a torque of "
        << Fixed(torque * 1e3, 2) << " mN m" << improve;
-    // For a cable that bends alike in every direction the shape fixes only the twist between the
-    // clamps: the same rotation the other way at another clamp fits as well.
-    for (size_t i = 0; i < fits.size(); ++i)
-      if (fits[i].ok && i != chosen && models[i].effect == "twist_preload" &&
-          bic(i) < bic(chosen) + 2.0) {
-        ex << " The shape fits as well with the clamp at s="
-           << Fixed(nominal.supports[static_cast<size_t>(*models[i].clamp)].s, 3)
-           << " m rotated instead (" << Fixed(WrapAngle(fits[i].x[0]) * 180 / M_PI, 1)
-           << " deg): it fixes only the twist between the clamps, so which one was turned "
-              "cannot be told from it.";
-        out.parameters["alternative_clamp"] = *models[i].clamp;
-        break;
-      }
+    // For a cable that bends alike in every direction and has no natural curvature, the
+    // centreline depends on the clamps' twist only through the twist between them (the twisting
+    // moment is constant along it; pins and clips pass it on): with exactly two clamps that hold
+    // the twist, turning the other one the opposite way gives the same shape, exactly. Which of
+    // them was turned cannot be told from the shape, and the diagnosis says so.
+    std::vector<int> holding;
+    for (size_t k = 0; k < nominal.supports.size(); ++k)
+      if (nominal.supports[k].kind == SupportKind::kClamp) holding.push_back(static_cast<int>(k));
+    if (holding.size() == 2 && nominal.material.bending_ratio == 1.0 &&
+        nominal.natural_curvature.empty()) {
+      const int other = holding[0] == *cm.clamp ? holding[1] : holding[0];
+      ex << " The shape cannot tell which clamp was turned: the clamp at s="
+         << Fixed(nominal.supports[static_cast<size_t>(other)].s, 3) << " m turned "
+         << Fixed(-angle * 180 / M_PI, 1)
+         << " deg gives the same shape (it depends only on the twist between the clamps).";
+      out.parameters["alternative_clamp"] = other;
+      out.parameters["alternative_angle"] = -angle;
+    }
   } else if (cm.effect == "clamp_compliance") {
     out.interval = mismatch;
     const double k = std::exp(-cx[0]);
