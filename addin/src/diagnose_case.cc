@@ -164,7 +164,13 @@ void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     Report(progress, 0.05 + 0.85 * static_cast<double>(i) / refs.size(), "fitting " + r.file);
     recorded.push_back(ReadForceCurveCsv(r.path));
     each.push_back(Blame(r.path, [&] {
-      return DiagnoseForceCurve(rc.nominal, r.test, recorded.back(), options.force, r.file);
+      try {
+        return DiagnoseForceCurve(rc.nominal, r.test, recorded.back(), options.force, r.file);
+      } catch (const FileError& e) {
+        // The diagnosis names the curve as the case lists it; the error names the file itself.
+        if (e.file() != r.file) throw;
+        throw FileError(r.path, e.problem());
+      }
     }));
   }
   const ForceCaseDiagnosis all = Blame(rc.case_file, [&] { return CombineForceDiagnoses(each, options.force); });

@@ -86,5 +86,29 @@ TEST(DiagnoseSetupMismatch, ReversedRefusedAndUnexplainedRecordings) {
             std::string::npos);
 }
 
+// A force case whose nominal response is orders of magnitude from the recorded one (here a
+// length of 1e300 m) is not a stiffness change: refused, naming the curve's file.
+TEST(DiagnoseSetupMismatch, ForceCaseOffByOrdersOfMagnitudeIsRefused) {
+  const fs::path root = testing::FreshTempDir("diagnose-force-mismatch");
+  const fs::path from = testing::PublicCasesDir() / "sample-force-none";
+  const fs::path dir = root / "in" / "long";
+  fs::create_directories(dir);
+  json::Json c = json::ReadJsonFile((from / "case.json").string());
+  c["cable"]["length"] = 1e300;
+  json::WriteJsonFile((dir / "case.json").string(), c);
+  std::string curve;
+  for (const auto& r : c["recordings"]) {
+    curve = r["file"].get<std::string>();
+    fs::copy_file(from / curve, dir / curve);
+  }
+  const auto run = testing::RunCablefit("diagnose '" + dir.string() + "' --out '" +
+                                        (root / "out").string() + "'");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("cablefit: " + (dir / curve).string() + ": the recorded"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("orders of magnitude apart"), std::string::npos) << run.err;
+}
+
 }  // namespace
 }  // namespace cablefit
