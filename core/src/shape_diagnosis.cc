@@ -8,7 +8,8 @@
 //    from the last, multi-start where the problem is not convex (interval position, contact
 //    position, anisotropy angle and ratio, clamp twist, every clamp).
 // 3. Select by BIC with the noise estimated from the best model's residual (floored by the
-//    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by min_bic_gain.
+//    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by min_bic_gain,
+//    which enters the scores as prior odds for `none`.
 // 4. Test whether the best fit explains the recording at all: its residual against the
 //    recording's own noise (with an allowance for errors a noise estimate misses) is a
 //    chi-square with 2n - k degrees of freedom. When it exceeds the 99.9 % quantile, nothing in
@@ -377,20 +378,22 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     if (it == best_of.end() || bic(i) < bic(it->second)) best_of[models[i].effect] = i;
   }
   if (!best_of.count("none")) throw InvalidInput("the nominal set-up could not be re-solved");
-  for (auto& [name, i] : best_of) order.emplace_back(bic(i), i);
+  // The margin an effect must win by is prior odds for `none`: scores, order and choice all
+  // include it, so the reported effect is always the best-scored candidate.
+  auto criterion = [&](size_t i) {
+    return bic(i) + (models[i].effect == "none" ? 0.0 : options.min_bic_gain);
+  };
+  for (auto& [name, i] : best_of) order.emplace_back(criterion(i), i);
   std::sort(order.begin(), order.end());
   const size_t none_index = best_of.at("none");
-  const double none_bic = bic(none_index);
-  size_t chosen = none_index;
-  if (order.front().second != none_index && order.front().first < none_bic - options.min_bic_gain)
-    chosen = order.front().second;
+  size_t chosen = order.front().second;
   double wsum = 0.0;
-  for (auto& [bic, i] : order) wsum += std::exp(-0.5 * (bic - order.front().first));
-  for (auto& [bic, i] : order) {
+  for (auto& [b, i] : order) wsum += std::exp(-0.5 * (b - order.front().first));
+  for (auto& [b, i] : order) {
     EffectCandidate c;
     c.effect = models[i].effect;
-    c.bic = bic;
-    c.score = std::exp(-0.5 * (bic - order.front().first)) / wsum;
+    c.bic = bic(i);
+    c.score = std::exp(-0.5 * (b - order.front().first)) / wsum;
     c.parameter_count = models[i].physical_parameters;
     c.clamp = models[i].clamp;
     for (int k = 0; k < models[i].physical_parameters; ++k)
@@ -418,7 +421,6 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     out.explained = a.chi_square <= a.limit;
   };
   assess();
-  if (!out.explained) chosen = order.front().second;
 
   // Final solves at full accuracy: the nominal from the recorded shape, the chosen model from
   // its fit's shape (the branch the fit found).
@@ -454,8 +456,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     assess();
     size_t next = none_index;
     for (auto& [b, i] : order)
-      if (!rejected[i] && (out.explained ? i != none_index && b < none_bic - options.min_bic_gain
-                                         : true)) {
+      if (!rejected[i]) {
         next = i;
         break;
       }
@@ -468,7 +469,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
       if (!rejected[i]) best_held = std::min(best_held, b);
     for (EffectCandidate& c : out.candidates) {
       const size_t i = best_of.at(c.effect);
-      c.score = rejected[i] ? 0.0 : std::exp(-0.5 * (c.bic - best_held));
+      c.score = rejected[i] ? 0.0 : std::exp(-0.5 * (criterion(i) - best_held));
       sum += c.score;
     }
     for (EffectCandidate& c : out.candidates) c.score /= sum;
@@ -500,14 +501,6 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   out.effect = cm.effect;
   for (const auto& c : out.candidates)
     if (c.effect == out.effect) out.confidence = c.score;
-  if (chosen == none_index) {
-    // Confidence that nothing is missing: the weight of `none` against the best
-    // alternative.
-    double alt = INFINITY;
-    for (auto& [b, i] : order)
-      if (i != none_index && !rejected[i]) alt = std::min(alt, b);
-    out.confidence = 1.0 / (1.0 + std::exp(-0.5 * (alt - none_bic)));
-  }
   out.clamp = cm.clamp;
   const auto mismatch = MismatchInterval(out.observation_s, out.baseline_deviation);
   std::ostringstream ex;
