@@ -30,9 +30,9 @@ bool SanitizerBuild() {
 #endif
 }
 
-std::filesystem::path SharedDir() {
-  if (const char* env = std::getenv("CABLEFIT_SHARED_DIR")) return env;
-  return SourceDir().parent_path() / "shared";
+std::filesystem::path PublicCasesDir() {
+  if (const char* env = std::getenv("CABLEFIT_PUBLIC_CASES")) return env;
+  return SourceDir() / "tests" / "data" / "cases" / "public";
 }
 
 std::filesystem::path FreshTempDir(const std::string& tag) {

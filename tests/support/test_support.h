@@ -11,8 +11,9 @@ namespace cablefit::testing {
 
 /// Repository root (CABLEFIT_SOURCE_DIR from CTest, else found from the working directory).
 std::filesystem::path SourceDir();
-/// ../shared next to the repository (public cases, specs).
-std::filesystem::path SharedDir();
+/// The public recording cases the tests read, copied into the repository so that a clone tests
+/// itself (tests/data/cases/public; CABLEFIT_PUBLIC_CASES overrides it).
+std::filesystem::path PublicCasesDir();
 /// A fresh empty temporary directory unique to the running test.
 std::filesystem::path FreshTempDir(const std::string& tag);
 

@@ -120,8 +120,15 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   }
   ShapeDiagnosisOptions so = options.shape;
   so.progress = Stage(progress, 0.15, 1.0);
-  ShapeDiagnosis d =
-      Blame(rc.case_file, [&] { return DiagnoseShape(rc.nominal, out->observation, so); });
+  const std::string observation_path =
+      line_ref && out->observation_source == line_ref->file ? line_ref->path : scan_ref->path;
+  ShapeDiagnosis d = Blame(rc.case_file, [&] {
+    try {
+      return DiagnoseShape(rc.nominal, out->observation, so);
+    } catch (const RecordingMismatch& e) {
+      throw FileError(observation_path, e.what());
+    }
+  });
   out->effect = d.effect;
   out->confidence = d.confidence;
   out->interval = d.interval;
@@ -132,6 +139,8 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   out->fitted = {d.fitted_max, d.fitted_rms};
   out->deviation_unit = "m";
   out->explanation = d.explanation;
+  out->explained = d.explained;
+  for (const std::string& note : d.notes) out->notes.push_back(out->observation_source + ": " + note);
   for (const EffectCandidate& c : d.candidates) out->candidates.emplace_back(c.effect, c.score);
   out->shape = std::move(d);
 }
@@ -155,10 +164,16 @@ void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     Report(progress, 0.05 + 0.85 * static_cast<double>(i) / refs.size(), "fitting " + r.file);
     recorded.push_back(ReadForceCurveCsv(r.path));
     each.push_back(Blame(r.path, [&] {
-      return DiagnoseForceCurve(rc.nominal, r.test, recorded.back(), options.force, r.file);
+      try {
+        return DiagnoseForceCurve(rc.nominal, r.test, recorded.back(), options.force, r.file);
+      } catch (const FileError& e) {
+        // The diagnosis names the curve as the case lists it; the error names the file itself.
+        if (e.file() != r.file) throw;
+        throw FileError(r.path, e.problem());
+      }
     }));
   }
-  const ForceCaseDiagnosis all = Blame(rc.case_file, [&] { return CombineForceDiagnoses(each); });
+  const ForceCaseDiagnosis all = Blame(rc.case_file, [&] { return CombineForceDiagnoses(each, options.force); });
   out->effect = ToString(all.effect);
   out->confidence = all.confidence;
   // The effect acts on the whole cable; none has no interval (as the reference writes it).

@@ -35,8 +35,24 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
   j["parameters"] = std::move(parameters);
   j["baseline"] = DeviationJson(d.baseline);
   j["fitted"] = DeviationJson(d.fitted);
+  j["explained"] = d.explained;
   j["explanation"] = d.explanation;
   j["candidates"] = std::move(candidates);
+  if (d.shape) {
+    // The test behind `explained`, so a reader can judge it.
+    const ShapeAdequacy& a = d.shape->adequacy;
+    j["adequacy"] = {{"test",
+                      "chi-square of the best fit's offsets against noise_allowance times the "
+                      "noise; explained when it is within the 99.9 % quantile"},
+                     {"best_effect", a.best_effect},
+                     {"noise_sigma", json::NumberOrNull(a.noise_sigma)},
+                     {"noise_allowance", json::NumberOrNull(a.noise_allowance)},
+                     {"points", a.points},
+                     {"degrees_of_freedom", a.degrees_of_freedom},
+                     {"chi_square", json::NumberOrNull(a.chi_square)},
+                     {"limit_999", json::NumberOrNull(a.limit)}};
+  }
+  if (!d.notes.empty()) j["notes"] = d.notes;
   return j;
 }
 

@@ -140,6 +140,14 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     h << Fact("fitted to", HtmlEscape(d.observation_source) + " (" +
                                std::to_string(d.observation.points.cols()) + " points)")
       << Fact("centre-point noise", HtmlEscape(FormatLength(d.observation.noise_sigma)));
+    if (d.shape) {
+      const ShapeAdequacy& a = d.shape->adequacy;
+      h << Fact("explained",
+                std::string(d.explained ? "yes" : "no") + " (best fit " +
+                    HtmlEscape(a.best_effect) + ": chi-square " + FormatNumber(a.chi_square, 3) +
+                    " for " + std::to_string(a.degrees_of_freedom) + " d.o.f., 99.9 % limit " +
+                    FormatNumber(a.limit, 3) + ")");
+    }
   }
   h << "</div>\n<p class=\"explanation\">" << HtmlEscape(d.explanation) << "</p>\n";
   if (!d.notes.empty()) {

@@ -70,12 +70,13 @@ std::string ParameterUnit(const std::string& name, const std::string& x_unit,
                           const std::string& y_unit) {
   if (name == "curvature") return "1/m";
   if (name == "direction" || name == "angle" || name == "principal_angle" ||
-      name == "total_bend_angle" || name == "far_clamp_twist" || name == "rotation_at_clamp")
+      name == "total_bend_angle" || name == "rotation_at_clamp" || name == "alternative_angle")
     return "rad";
   if (name == "ratio" || name == "axis") return "\u2013";
   if (name == "s" || name == "s_start" || name == "s_end" || name == "width") return "m";
   if (name == "force" || name == "force_vector") return "N";
   if (name == "stiffness") return "N m/rad";
+  if (name == "torque") return "N m";
   if (name == "sensor_offset" || name == "slip_force_total" || name == "noise_sigma") return y_unit;
   // Iwan elements of a hysteresis fit: stiffness k_<i> and slip force f_slip_<i>.
   if (name.rfind("f_slip_", 0) == 0) return y_unit;

@@ -1,25 +1,19 @@
-// Shape diagnosis (issue 4). Method:
-// 1. Simulate the nominal set-up from the recorded shape (selects the branch),
-// then fit the one
-//    nuisance parameter every model shares: the twist the far clamp imposes. A
-//    bench sets a clamp's rotation about the cable axis by eye, and a case's
-//    far normal is often not the one its cable has (measured on the public
-//    reference data: it is the start normal projected, and the cable is held
-//    near its torque-free twist instead). So the twist is fitted in every model
-//    under a prior: within twist_sigma of the case's normal or of the
-//    torque-free twist (the far clamp released about its axis). twist_preload
-//    is the same rotation without the prior, so it wins only when the shape
-//    demands a twist far from both.
-// 2. Fit every catalogue effect by Levenberg-Marquardt on the seen points
-// (residual = offset of
-//    each point from its closest point on the simulated curve), warm-starting
-//    every forward solve from the last, multi-start where the problem is not
-//    convex (interval position, contact position, anisotropy angle, both
-//    clamps).
-// 3. Select by BIC with the noise estimated from the best model's residual
-// (floored by the
-//    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by
-//    min_bic_gain.
+// Shape diagnosis. Method:
+// 1. Check that the recording belongs between its clamps (an inextensible cable cannot reach
+//    farther from a clamp than its length; a recording running from the last clamp to the first
+//    is reversed, with a note), then simulate the nominal set-up from the recorded shape (this
+//    selects the equilibrium branch). The clamp frames of the case are taken as given.
+// 2. Fit every catalogue effect by Levenberg-Marquardt on the seen points (residual = offset of
+//    each point from its closest point on the simulated curve), warm-starting every forward solve
+//    from the last, multi-start where the problem is not convex (interval position, contact
+//    position, anisotropy angle and ratio, clamp twist, every clamp).
+// 3. Select by BIC with the noise estimated from the best model's residual (floored by the
+//    recording's own noise): chi^2 + k ln n. `none` unless an effect wins by min_bic_gain,
+//    which enters the scores as prior odds for `none`.
+// 4. Test whether the best fit explains the recording at all: its residual against the
+//    recording's own noise (with an allowance for errors a noise estimate misses) is a
+//    chi-square with 2n - k degrees of freedom. When it exceeds the 99.9 % quantile, nothing in
+//    the catalogue explains the recording and the diagnosis says so.
 #include "cablefit/core/diagnosis/shape_diagnosis.h"
 
 #include <Eigen/Geometry>
@@ -47,39 +41,12 @@ struct FitContext {
   double length = 0.0;
   double window = 0.0;
   int curve_samples = 0;
-  // Prior on the nuisance twist (far clamp's rotation about its tangent from
-  // the case's normal).
-  bool twist_prior = false;
-  double twist_free = 0.0;    // [rad] the torque-free rotation
-  double twist_sigma = 0.25;  // [rad] ShapeDiagnosisOptions::twist_sigma
-  double prior_scale = 1e-4;  // [m] the offset one prior standard deviation weighs in the fits
 };
 
 double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
-// Signed distance of the nuisance rotation from the nearer nominal twist, in
-// prior sigmas.
-double TwistPriorDeviation(const FitContext& ctx, double rotation) {
-  const double a = WrapAngle(rotation), b = WrapAngle(rotation - ctx.twist_free);
-  return (std::abs(a) <= std::abs(b) ? a : b) / ctx.twist_sigma;
-}
-
-// Rotation about the clamp's tangent from its normal to the frame the solution
-// holds there.
-double RotationAtClamp(const SupportSpec& clamp, const RodSolution& sol) {
-  const Vec3 t = clamp.tangent.normalized();
-  int k = 0;
-  for (int i = 1; i < sol.frame_s.size(); ++i)
-    if (std::abs(sol.frame_s[i] - clamp.s) < std::abs(sol.frame_s[k] - clamp.s)) k = i;
-  const Frame& f = sol.frames[static_cast<size_t>(k)];
-  // The element's d1 carried onto the clamp's tangent by the smallest rotation.
-  const Vec3 d1 = Eigen::Quaterniond::FromTwoVectors(f.d3, t) * f.d1;
-  const Vec3 n = (clamp.normal - clamp.normal.dot(t) * t).normalized();
-  return std::atan2(n.cross(d1).dot(t), n.dot(d1));
-}
-
 bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eigen::VectorXd* r,
-              CurveProjection* proj = nullptr) {
+              Polyline* shape = nullptr) {
   SimulationResult res;
   try {
     res = sim->Resimulate(spec);
@@ -91,7 +58,7 @@ bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eig
       SampleCenterline(res.solution.centerline, UniformArcLengths(ctx.length, ctx.curve_samples));
   CurveProjection p = ProjectOntoCurve(curve, ctx.points, ctx.s, ctx.window);
   *r = Eigen::Map<const Eigen::VectorXd>(p.offset.data(), p.offset.size());
-  if (proj) *proj = std::move(p);
+  if (shape) *shape = res.solution.centerline;
   return true;
 }
 
@@ -99,62 +66,89 @@ struct Fit {
   const EffectModel* model = nullptr;
   Eigen::VectorXd x;
   double cost = INFINITY;  // 1/2 |offsets|^2 [m^2]
-  double prior = 0.0;      // squared prior deviation of the nuisance twist [-]
+  Polyline shape;          // the fitted centreline (warm start of the final solve)
+  int branch = 0;          // which equilibrium of the nominal the fit started from
   bool ok = false;
 };
 
-Fit FitModel(const FitContext& ctx, const RodSimulator& base, const EffectModel& m,
-             const Eigen::VectorXd& nuisance, int max_iterations) {
-  const int np = m.physical_parameters;
-  const int nn = static_cast<int>(m.scale.size()) - np;
-  const bool prior = m.has_nuisance && nn > 0 && ctx.twist_prior;
+Fit FitModel(const FitContext& ctx, const std::vector<RodSimulator>& bases, const EffectModel& m,
+             int max_iterations) {
   struct Run {
     RodSimulator sim;
     LmResult lm;
+    int branch = 0;
   };
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
-      if (!Residual(ctx, &r->sim, m.apply(x), res)) return false;
-      if (prior) {
-        res->conservativeResize(res->size() + 1);
-        (*res)[res->size() - 1] = ctx.prior_scale * TwistPriorDeviation(ctx, x[np]);
-      }
-      return true;
+      return Residual(ctx, &r->sim, m.apply(x), res);
     };
     LmOptions opt;
     opt.max_iterations = iterations;
     r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
   };
-  // Many starts (interval and contact positions, anisotropy angles): a few
-  // iterations each, then only the most promising ones are carried to
-  // convergence.
+  // Many starts (interval and contact positions, anisotropy angles, clamp twists): a few
+  // iterations each, then only the most promising ones are carried to convergence. Starts that
+  // end in the same place are one basin: the survivors are distinct ones.
   const bool screen = m.starts.size() > 2;
   std::vector<Run> runs;
-  for (const Eigen::VectorXd& start : m.starts) {
-    Eigen::VectorXd x0(np + nn);
-    x0.head(np) = start;
-    if (nn) x0.tail(nn) = nuisance;
-    Run r{base, {}};
-    run(&r, x0, screen ? 4 : max_iterations);
-    if (r.lm.ok) runs.push_back(std::move(r));
-  }
-  std::sort(runs.begin(), runs.end(),
-            [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
+  for (size_t b = 0; b < bases.size(); ++b)
+    for (const Eigen::VectorXd& start : m.starts) {
+      Run r{bases[b], {}, static_cast<int>(b)};
+      run(&r, start, screen ? 4 : max_iterations);
+      if (r.lm.ok) runs.push_back(std::move(r));
+    }
+  auto by_cost = [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; };
+  std::sort(runs.begin(), runs.end(), by_cost);
   if (screen) {
-    if (runs.size() > 2) runs.resize(2);
+    std::vector<Run> kept;
+    for (Run& r : runs) {
+      if (kept.size() >= 3) break;
+      bool same = false;
+      for (const Run& k : kept)
+        same = same || (r.branch == k.branch &&
+                        (r.lm.x - k.lm.x).cwiseQuotient(m.scale).cwiseAbs().maxCoeff() < 1.0);
+      if (!same) kept.push_back(std::move(r));
+    }
+    runs = std::move(kept);
     for (Run& r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
-    std::sort(runs.begin(), runs.end(),
-              [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; });
+    std::sort(runs.begin(), runs.end(), by_cost);
   }
   Fit best;
   best.model = &m;
   if (!runs.empty()) {
     best.x = runs.front().lm.x;
-    if (prior) best.prior = std::pow(TwistPriorDeviation(ctx, best.x[np]), 2);
-    best.cost = runs.front().lm.cost - 0.5 * std::pow(ctx.prior_scale, 2) * best.prior;
+    best.cost = runs.front().lm.cost;
+    best.branch = runs.front().branch;
+    Eigen::VectorXd r;
+    Residual(ctx, &runs.front().sim, m.apply(best.x), &r, &best.shape);
     best.ok = true;
   }
   return best;
+}
+
+// Upper 99.9 % quantile of chi-square with `dof` degrees of freedom (Wilson-Hilferty; relative
+// error below 1e-3 for dof >= 10).
+double ChiSquareQuantile999(double dof) {
+  const double z = 3.0902, a = 2.0 / (9.0 * dof);
+  return dof * std::pow(1.0 - a + z * std::sqrt(a), 3);
+}
+
+// How far the recording is from fitting between the clamps: for every clamp, the largest
+// distance of a recorded point from it minus the farthest the cable could reach from it [m].
+struct Reach {
+  double excess = -INFINITY;  // > 0: some point is out of reach
+  int clamp = 0;
+  double distance = 0.0;
+};
+Reach ReachExcess(const RodSpec& spec, const Eigen::Matrix3Xd& pts) {
+  Reach out;
+  for (size_t k = 0; k < spec.supports.size(); ++k) {
+    const SupportSpec& c = spec.supports[k];
+    const double reach = std::max(c.s, spec.length - c.s);
+    const double d = (pts.colwise() - c.position).colwise().norm().maxCoeff();
+    if (d - reach > out.excess) out = {d - reach, static_cast<int>(k), d};
+  }
+  return out;
 }
 
 // The span where the deviation exceeds half its maximum (seen points only).
@@ -193,27 +187,71 @@ bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
   if (!(accuracy > 0)) return fail("accuracy must be > 0");
   if (max_iterations < 1) return fail("max_iterations must be >= 1");
   if (max_points < 10) return fail("max_points must be >= 10");
-  if (!(twist_sigma >= 0)) return fail("twist_sigma must be >= 0");
+  if (!(noise_allowance >= 1.0)) return fail("noise_allowance must be >= 1");
   return true;
 }
 
-ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs,
+ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& recorded,
                              const ShapeDiagnosisOptions& options) {
   const auto t0 = Clock::now();
   std::string why;
   if (!options.IsValid(&why)) throw InvalidInput("diagnosis options: " + why);
   ValidateRodSpec(nominal);
-  const int n_all = static_cast<int>(obs.points.cols());
+  const int n_all = static_cast<int>(recorded.points.cols());
   if (n_all < 5) throw InvalidInput("the recording has only " + std::to_string(n_all) + " points");
-  if (!obs.points.allFinite()) throw InvalidInput("the recording has non-finite points");
+  if (!recorded.points.allFinite()) throw InvalidInput("the recording has non-finite points");
   const double L = nominal.length;
   auto progress = [&](double f, const char* stage) {
     if (options.progress && !options.progress(f, stage)) throw InvalidInput("cancelled");
   };
+  ShapeDiagnosis out;
 
-  // Thin the points to a spacing of about two diameters: neighbouring centre
-  // points of a scan share errors, and treating them as independent would
-  // overstate the evidence.
+  // Does the recording belong between these clamps? How far a point may stray beyond the
+  // cable's reach: its radius, the noise, and the uncertainty of where the clamps hold it.
+  const double reach_tolerance =
+      nominal.material.diameter + 10.0 * recorded.noise_sigma + 0.01 * L;
+  ShapeObservation obs = recorded;
+  {
+    const SupportSpec& c0 = nominal.supports.front();
+    const SupportSpec& c1 = nominal.supports.back();
+    const Vec3 first = obs.points.col(0), last = obs.points.col(n_all - 1);
+    // A recording's ends lie at its end clamps (less the unseen margins); a recording listed from
+    // the last clamp to the first has them swapped.
+    double forward = 0.0, reverse = 0.0;
+    if (c0.s <= 1e-6 * L) {
+      forward += (first - c0.position).norm();
+      reverse += (last - c0.position).norm();
+    }
+    if (nominal.supports.size() > 1 && c1.s >= (1 - 1e-6) * L &&
+        (c1.position - c0.position).norm() > reach_tolerance) {
+      forward += (last - c1.position).norm();
+      reverse += (first - c1.position).norm();
+    }
+    if (forward > reach_tolerance && reverse < 0.5 * forward) {
+      obs.points = recorded.points.rowwise().reverse();
+      if (recorded.s.size() == n_all) obs.s = (L - recorded.s.reverse().array()).matrix();
+      obs.coverage.clear();
+      for (auto it = recorded.coverage.rbegin(); it != recorded.coverage.rend(); ++it)
+        obs.coverage.emplace_back(L - it->second, L - it->first);
+      out.notes.push_back(
+          "the recording runs from the last clamp to the first (its ends are " + Mm(forward) +
+          " from their clamps as listed, " + Mm(reverse) + " reversed); it was reversed");
+    }
+  }
+  const Reach reach = ReachExcess(nominal, obs.points);
+  if (reach.excess > reach_tolerance) {
+    const SupportSpec& c = nominal.supports[static_cast<size_t>(reach.clamp)];
+    std::ostringstream os;
+    os << "the recording does not fit its set-up: a recorded point lies "
+       << Fixed(reach.distance, 3) << " m from the clamp at s=" << Fixed(c.s, 3) << " m, but "
+       << Fixed(std::max(c.s, L - c.s), 3)
+       << " m of cable cannot reach farther; check the units (metres), the clamp positions and "
+          "that the recording belongs to this case";
+    throw RecordingMismatch(os.str());
+  }
+
+  // Thin the points to a spacing of about two diameters: neighbouring centre points of a scan
+  // share errors, and treating them as independent would overstate the evidence.
   FitContext ctx;
   ctx.obs = &obs;
   ctx.length = L;
@@ -266,47 +304,47 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   if (!nominal_fit_solution.converged)
     throw InvalidInput("the nominal set-up could not be solved from the recorded shape: " +
                        nominal_fit_solution.solution.summary.message);
-  progress(0.05, "nominal");
-
-  // The torque-free twist: the nominal with the far clamp released about its
-  // axis.
-  const int nuis = NuisanceClampIndex(nominal);
-  ctx.twist_sigma = options.twist_sigma;
-  if (nuis >= 0 && options.twist_sigma > 0) {
-    RodSpec released = nominal;
-    released.supports[static_cast<size_t>(nuis)].kind = SupportKind::kClip;
-    RodSimulator sim = base;
-    const SimulationResult r = sim.Simulate(released, &initial);
-    if (r.converged) {
-      ctx.twist_prior = true;
-      ctx.twist_free = RotationAtClamp(nominal.supports[static_cast<size_t>(nuis)], r.solution);
-      ctx.prior_scale = std::max(obs.noise_sigma, 1e-6);
-    }
-  }
-
-  // Nuisance twist: coarse scan, then it is refined inside every model's fit.
-  Eigen::VectorXd nuisance(nuis >= 0 ? 1 : 0);
-  if (nuis >= 0) {
-    double best = INFINITY, best_a = 0.0;
-    for (int k = -12; k < 12; ++k) {
-      RodSimulator sim = base;
-      RodSpec s = nominal;
-      const double a = k * M_PI / 12;
-      ApplyNuisanceTwist(nuis, a, &s);
-      Eigen::VectorXd r;
-      if (Residual(ctx, &sim, s, &r) && r.squaredNorm() < best) best = r.squaredNorm(), best_a = a;
-    }
-    nuisance[0] = best_a;
-  }
+  // Other equilibria of the nominal. A cable that sags little, or hangs near a fold, can rest in
+  // another equilibrium than the one the recorded shape leads the solver to (an effect can tip
+  // it over): the fits also start from the solver's own start (clamps joined smoothly, loads
+  // continued) and from the recorded sag mirrored through the chord, when those settle visibly
+  // elsewhere (20 noise sigmas: far beyond the recording's scatter).
+  std::vector<RodSimulator> bases{base};
+  std::vector<std::string> branch_names{"the recorded shape"};
   {
-    // Re-base the warm start on the nuisance-corrected nominal.
-    RodSpec s = nominal;
-    if (nuis >= 0) ApplyNuisanceTwist(nuis, nuisance[0], &s);
-    Eigen::VectorXd r;
-    RodSimulator sim = base;
-    if (Residual(ctx, &sim, s, &r)) base = sim;
+    std::vector<Polyline> shapes{nominal_fit_solution.solution.centerline};
+    const Eigen::VectorXd at = UniformArcLengths(L, 101);
+    auto try_branch = [&](const Polyline* start, const char* name) {
+      RodSimulator sim(fit_opt);
+      SimulationResult r;
+      try {
+        r = sim.Simulate(nominal, start);
+      } catch (const InvalidInput&) {
+        return;
+      }
+      if (!r.converged || !r.solution.summary.stable) return;
+      const Eigen::Matrix3Xd p = SampleCenterline(r.solution.centerline, at).points;
+      for (const Polyline& q : shapes)
+        if ((SampleCenterline(q, at).points - p).colwise().norm().maxCoeff() <
+            20.0 * obs.noise_sigma)
+          return;
+      shapes.push_back(r.solution.centerline);
+      bases.push_back(sim);
+      branch_names.push_back(name);
+    };
+    try_branch(nullptr, "the solver's own start");
+    if (nominal.supports.size() > 1) {
+      const Vec3 a = nominal.supports.front().position, b = nominal.supports.back().position;
+      if ((b - a).norm() > 1e-9) {
+        const Eigen::AngleAxisd half_turn(M_PI, (b - a).normalized());
+        Polyline mirrored = initial;
+        for (int i = 0; i < mirrored.size(); ++i)
+          mirrored.points.col(i) = a + half_turn * (Vec3(initial.points.col(i)) - a);
+        try_branch(&mirrored, "the recorded sag mirrored through the chord");
+      }
+    }
   }
-  progress(0.1, "twist");
+  progress(0.05, "nominal");
 
   std::vector<double> moments;
   for (const auto& re : nominal_fit_solution.solution.reactions)
@@ -314,34 +352,23 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   std::vector<EffectModel> models = BuildEffectModels(nominal, moments);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
-    if (models[i].effect == "twist_preload") {
-      if (!ctx.twist_prior) {  // without the prior it is the nuisance itself:
-                               // not a candidate
-        fits.emplace_back();
-        continue;
-      }
-      models[i].starts = {nuisance};
-    }
-    Fit f = FitModel(ctx, base, models[i], nuisance, options.max_iterations);
-    if (models[i].effect == "none" && f.ok && f.x.size()) nuisance = f.x.tail(f.x.size());
-    fits.push_back(f);
-    progress(0.1 + 0.8 * (i + 1) / models.size(), models[i].effect.c_str());
+    fits.push_back(FitModel(ctx, bases, models[i], options.max_iterations));
+    progress(0.05 + 0.85 * (i + 1) / models.size(), models[i].effect.c_str());
   }
 
-  // Selection: BIC with the noise of the best model (floored by the recording's
-  // noise).
+  // Selection: BIC with the noise of the best model (floored by the recording's noise).
   double best_cost = INFINITY;
-  for (const Fit& f : fits)
-    if (f.ok) best_cost = std::min(best_cost, f.cost);
+  for (size_t i = 0; i < fits.size(); ++i)
+    if (fits[i].ok) best_cost = std::min(best_cost, fits[i].cost);
   if (!std::isfinite(best_cost)) throw InvalidInput("no model could be fitted to the recording");
   const int dof = 2 * n;  // a point's offset from the curve has two free components
+  const double noise2 = obs.noise_sigma * obs.noise_sigma;
   double sigma2 = 2.0 * best_cost / std::max(1, dof - 6);
-  sigma2 = std::max(sigma2, obs.noise_sigma * obs.noise_sigma);
+  sigma2 = std::max(sigma2, noise2);
   const double log_n = std::log(static_cast<double>(dof));
   auto bic = [&](size_t i) {
-    return 2.0 * fits[i].cost / sigma2 + fits[i].prior + models[i].physical_parameters * log_n;
+    return 2.0 * fits[i].cost / sigma2 + models[i].physical_parameters * log_n;
   };
-  ShapeDiagnosis out;
   std::vector<std::pair<double, size_t>> order;
   // Best fit per effect name (clamp effects keep their best clamp).
   std::map<std::string, size_t> best_of;
@@ -350,48 +377,116 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
     auto it = best_of.find(models[i].effect);
     if (it == best_of.end() || bic(i) < bic(it->second)) best_of[models[i].effect] = i;
   }
-  for (auto& [name, i] : best_of) order.emplace_back(bic(i), i);
+  if (!best_of.count("none")) throw InvalidInput("the nominal set-up could not be re-solved");
+  // The margin an effect must win by is prior odds for `none`: scores, order and choice all
+  // include it, so the reported effect is always the best-scored candidate.
+  auto criterion = [&](size_t i) {
+    return bic(i) + (models[i].effect == "none" ? 0.0 : options.min_bic_gain);
+  };
+  for (auto& [name, i] : best_of) order.emplace_back(criterion(i), i);
   std::sort(order.begin(), order.end());
   const size_t none_index = best_of.at("none");
-  const double none_bic = bic(none_index);
-  size_t chosen = none_index;
-  if (order.front().second != none_index && order.front().first < none_bic - options.min_bic_gain)
-    chosen = order.front().second;
+  size_t chosen = order.front().second;
   double wsum = 0.0;
-  for (auto& [bic, i] : order) wsum += std::exp(-0.5 * (bic - order.front().first));
-  for (auto& [bic, i] : order) {
+  for (auto& [b, i] : order) wsum += std::exp(-0.5 * (b - order.front().first));
+  for (auto& [b, i] : order) {
     EffectCandidate c;
     c.effect = models[i].effect;
-    c.bic = bic;
-    c.score = std::exp(-0.5 * (bic - order.front().first)) / wsum;
+    c.bic = bic(i);
+    c.score = std::exp(-0.5 * (b - order.front().first)) / wsum;
     c.parameter_count = models[i].physical_parameters;
     c.clamp = models[i].clamp;
     for (int k = 0; k < models[i].physical_parameters; ++k)
       c.parameters[models[i].names[k]] = fits[i].x[k];
     out.candidates.push_back(c);
   }
-  // Final solves at full accuracy: nominal (with the fitted twist) and the
-  // chosen model.
+
+  // Does anything explain the recording? The best fit's residual against the recording's own
+  // noise is chi-square with 2n - k degrees of freedom when the model is right. Fits set aside
+  // below (they did not hold in the accurate solve) do not count.
+  std::vector<bool> rejected(fits.size(), false);
+  auto assess = [&] {
+    size_t best = none_index;
+    for (size_t i = 0; i < fits.size(); ++i)
+      if (fits[i].ok && !rejected[i] && fits[i].cost < fits[best].cost) best = i;
+    ShapeAdequacy& a = out.adequacy;
+    a.noise_sigma = obs.noise_sigma;
+    a.best_effect = models[best].effect;
+    a.points = n;
+    a.degrees_of_freedom = dof - models[best].physical_parameters;
+    a.noise_allowance = options.noise_allowance;
+    a.chi_square =
+        2.0 * fits[best].cost / (noise2 * options.noise_allowance * options.noise_allowance);
+    a.limit = ChiSquareQuantile999(a.degrees_of_freedom);
+    out.explained = a.chi_square <= a.limit;
+  };
+  assess();
+
+  // Final solves at full accuracy: the nominal from the recorded shape, the chosen model from
+  // its fit's shape (the branch the fit found).
+  RodSimulator fine_nominal;
+  const SimulationResult rn = fine_nominal.Simulate(nominal, &initial);
+  const Eigen::VectorXd samples = UniformArcLengths(L, ctx.curve_samples);
+  const Polyline nominal_curve = SampleCenterline(rn.solution.centerline, samples);
+  const CurveProjection pn = ProjectOntoCurve(nominal_curve, obs.points, s_obs, ctx.window);
+  // Half the squared offsets of the thinned points from a curve (the fits' cost) [m^2].
+  auto thinned_cost = [&](const Polyline& curve) {
+    return 0.5 * ProjectOntoCurve(curve, ctx.points, ctx.s, ctx.window).offset.squaredNorm();
+  };
+  const double nominal_cost = thinned_cost(nominal_curve);
+  // A fit whose accurate solve loses most of what it gained over the nominal (another branch, a
+  // solve that failed) is not a result: it is reported and the next candidate is taken.
+  SimulationResult rf;
+  for (;;) {
+    out.fitted_spec = models[chosen].apply(fits[chosen].x);
+    RodSimulator fine_fitted;
+    rf = fine_fitted.Simulate(out.fitted_spec,
+                              fits[chosen].shape.size() > 1 ? &fits[chosen].shape : &initial);
+    if (!rf.converged) rf = RodSimulator().Simulate(out.fitted_spec, &initial);
+    if (chosen == none_index) break;
+    const double gained = fits[none_index].cost - fits[chosen].cost;
+    const double cost = rf.converged ? thinned_cost(SampleCenterline(rf.solution.centerline, samples))
+                                     : INFINITY;
+    if (cost <= nominal_cost - 0.5 * gained) break;
+    rejected[chosen] = true;
+    out.notes.push_back("the " + models[chosen].effect +
+                        " fit did not hold in the accurate solve (" +
+                        (rf.converged ? "it gave back most of its improvement" : "not solved") +
+                        "); the next candidate was taken");
+    assess();
+    size_t next = none_index;
+    for (auto& [b, i] : order)
+      if (!rejected[i]) {
+        next = i;
+        break;
+      }
+    chosen = next;
+  }
+  if (std::find(rejected.begin(), rejected.end(), true) != rejected.end()) {
+    // Scores among the fits that held: a set-aside fit weighs nothing.
+    double best_held = INFINITY, sum = 0.0;
+    for (auto& [b, i] : order)
+      if (!rejected[i]) best_held = std::min(best_held, b);
+    for (EffectCandidate& c : out.candidates) {
+      const size_t i = best_of.at(c.effect);
+      c.score = rejected[i] ? 0.0 : std::exp(-0.5 * (criterion(i) - best_held));
+      sum += c.score;
+    }
+    for (EffectCandidate& c : out.candidates) c.score /= sum;
+    std::stable_sort(out.candidates.begin(), out.candidates.end(),
+                     [](const EffectCandidate& a, const EffectCandidate& b) {
+                       return a.score > b.score;
+                     });
+  }
   const EffectModel& cm = models[chosen];
   const Eigen::VectorXd& cx = fits[chosen].x;
-  RodSpec nominal_twisted = nominal;
-  const Eigen::VectorXd& none_x = fits[none_index].x;
-  // The nominal shown against the recording holds the twist the nominal fit
-  // found, so that the deviation is the effect's; a twist preload is measured
-  // from the torque-free hold.
-  const bool preload = cm.effect == "twist_preload";
-  if (nuis >= 0 && none_x.size())
-    ApplyNuisanceTwist(nuis, preload && ctx.twist_prior ? ctx.twist_free : none_x[0],
-                       &nominal_twisted);
-  out.fitted_spec = cm.apply(cx);
-  RodSimulator fine_nominal, fine_fitted;
-  const SimulationResult rn = fine_nominal.Simulate(nominal_twisted, &initial);
-  const SimulationResult rf = fine_fitted.Simulate(out.fitted_spec, &initial);
+  if (fits[chosen].branch > 0)
+    out.notes.push_back("the " + cm.effect + " fit started from another equilibrium of the " +
+                        "nominal set-up (solved from " +
+                        branch_names[static_cast<size_t>(fits[chosen].branch)] +
+                        ") than the one the recorded shape leads to");
   out.nominal_solution = rn.solution;
   out.fitted_solution = rf.solution;
-  const Eigen::VectorXd samples = UniformArcLengths(L, ctx.curve_samples);
-  const CurveProjection pn = ProjectOntoCurve(SampleCenterline(rn.solution.centerline, samples),
-                                              obs.points, s_obs, ctx.window);
   const CurveProjection pf = ProjectOntoCurve(SampleCenterline(rf.solution.centerline, samples),
                                               obs.points, s_obs, ctx.window);
   out.observation_s = pn.s;
@@ -406,14 +501,6 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   out.effect = cm.effect;
   for (const auto& c : out.candidates)
     if (c.effect == out.effect) out.confidence = c.score;
-  if (chosen == none_index) {
-    // Confidence that nothing is missing: the weight of `none` against the best
-    // alternative.
-    const double alt = order.front().second == none_index
-                           ? (order.size() > 1 ? order[1].first : INFINITY)
-                           : order.front().first;
-    out.confidence = 1.0 / (1.0 + std::exp(-0.5 * (alt - none_bic)));
-  }
   out.clamp = cm.clamp;
   const auto mismatch = MismatchInterval(out.observation_s, out.baseline_deviation);
   std::ostringstream ex;
@@ -442,11 +529,9 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   } else if (cm.effect == "clamp_orientation") {
     out.interval = mismatch;
     const double angle = std::hypot(cx[0], cx[1]);
+    const SupportSpec& sp = nominal.supports[static_cast<size_t>(*cm.clamp)];
     const Frame f = Frame::FromTangentNormal(
-        nominal_twisted.supports[*cm.clamp].tangent,
-        nominal_twisted.supports[*cm.clamp].kind == SupportKind::kClamp
-            ? nominal_twisted.supports[*cm.clamp].normal
-            : nominal_twisted.supports[*cm.clamp].tangent.unitOrthogonal());
+        sp.tangent, sp.kind == SupportKind::kClamp ? sp.normal : sp.tangent.unitOrthogonal());
     const Vec3 axis = angle > 0 ? Vec3((cx[0] * f.d1 + cx[1] * f.d2) / angle) : Vec3(f.d1);
     out.parameters["angle"] = angle;
     out.vectors["axis"] = axis;
@@ -488,21 +573,32 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
   } else if (cm.effect == "twist_preload") {
     out.interval = mismatch;
     const SupportSpec& clamp = nominal.supports[static_cast<size_t>(*cm.clamp)];
-    const double from_case = WrapAngle(cx[0]);
-    // The twist the clamp imposes against the torque-free hold when that is
-    // known (the case's normal is the less reliable reference, see the method
-    // above): the total twist of the fitted cable, whose torque-free state has
-    // none.
-    const double angle = ctx.twist_prior ? rf.solution.twist_angle : from_case;
+    const double angle = WrapAngle(cx[0]);
     const double torque = rf.solution.reactions[static_cast<size_t>(*cm.clamp)].moment.dot(
         clamp.tangent.normalized());
     out.parameters["angle"] = angle;
-    out.parameters["angle_from_case_normal"] = from_case;
     out.parameters["torque"] = torque;
     ex << "The clamp at s=" << Fixed(clamp.s, 3) << " m is rotated " << Fixed(angle * 180 / M_PI, 1)
-       << " deg about the cable axis from a twist-free hold (" << Fixed(from_case * 180 / M_PI, 1)
-       << " deg from the normal in the case): the cable carries a torque of "
+       << " deg about the cable axis from the normal in the case: the cable carries a torque of "
        << Fixed(torque * 1e3, 2) << " mN m" << improve;
+    // For a cable that bends alike in every direction and has no natural curvature, the
+    // centreline depends on the clamps' twist only through the twist between them (the twisting
+    // moment is constant along it; pins and clips pass it on): with exactly two clamps that hold
+    // the twist, turning the other one the opposite way gives the same shape, exactly. Which of
+    // them was turned cannot be told from the shape, and the diagnosis says so.
+    std::vector<int> holding;
+    for (size_t k = 0; k < nominal.supports.size(); ++k)
+      if (nominal.supports[k].kind == SupportKind::kClamp) holding.push_back(static_cast<int>(k));
+    if (holding.size() == 2 && nominal.material.bending_ratio == 1.0 &&
+        nominal.natural_curvature.empty()) {
+      const int other = holding[0] == *cm.clamp ? holding[1] : holding[0];
+      ex << " The shape cannot tell which clamp was turned: the clamp at s="
+         << Fixed(nominal.supports[static_cast<size_t>(other)].s, 3) << " m turned "
+         << Fixed(-angle * 180 / M_PI, 1)
+         << " deg gives the same shape (it depends only on the twist between the clamps).";
+      out.parameters["alternative_clamp"] = other;
+      out.parameters["alternative_angle"] = -angle;
+    }
   } else if (cm.effect == "clamp_compliance") {
     out.interval = mismatch;
     const double k = std::exp(-cx[0]);
@@ -512,9 +608,31 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& obs
        << "the cable rotate against a rotational stiffness of about " << Fixed(k, 3) << " N m/rad"
        << improve;
   }
-  if (nuis >= 0 && cx.size() > cm.physical_parameters)
-    out.parameters["far_clamp_twist"] = cx[cx.size() - 1];
-  out.explanation = ex.str();
+  if (!out.explained) {
+    // A best fit that leaves far more than the noise is not a diagnosis: say what it leaves and
+    // what to check instead of a confident story.
+    out.confidence = std::min(out.confidence, 0.1);
+    std::ostringstream nx;
+    nx << "No effect of the catalogue explains the recording: the best fit (" << cm.effect
+       << ") leaves a max deviation of " << Mm(out.fitted_max) << " (rms " << Mm(out.fitted_rms)
+       << ") against a noise of " << Mm(obs.noise_sigma) << " (chi-square with "
+       << Fixed(options.noise_allowance, 1) << " times that noise: "
+       << Fixed(out.adequacy.chi_square, 0) << " for " << out.adequacy.degrees_of_freedom
+       << " degrees of freedom, 99.9 % limit " << Fixed(out.adequacy.limit, 0)
+       << "). Check the set-up: the clamps (positions, directions, whether every clamp is "
+          "listed), the units of the recording and that it belongs to this case. Best candidate: "
+       << ex.str();
+    out.explanation = nx.str();
+  } else {
+    // A close runner-up is part of the answer: the scores alone do not separate them.
+    for (const EffectCandidate& c : out.candidates) {
+      if (c.effect == out.effect || c.score < 0.25) continue;
+      ex << " The recording hardly separates it from " << c.effect << " (scores "
+         << Fixed(out.confidence, 2) << " and " << Fixed(c.score, 2) << ").";
+      break;
+    }
+    out.explanation = ex.str();
+  }
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   progress(1.0, "done");
   return out;

@@ -14,43 +14,28 @@ Frame FrameOf(const SupportSpec& s) {
 
 }  // namespace
 
-int NuisanceClampIndex(const RodSpec& nominal) {
-  for (int k = static_cast<int>(nominal.supports.size()) - 1; k > 0; --k)
-    if (nominal.supports[k].kind == SupportKind::kClamp) return k;
-  return -1;
-}
-
-void ApplyNuisanceTwist(int clamp, double angle, RodSpec* spec) {
-  if (clamp < 0) return;
-  SupportSpec& sp = spec->supports[clamp];
+void RotateClampAboutTangent(int clamp, double angle, RodSpec* spec) {
+  SupportSpec& sp = spec->supports[static_cast<size_t>(clamp)];
   sp.normal = Eigen::AngleAxisd(angle, sp.tangent.normalized()) * sp.normal;
 }
 
 std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
                                            const std::vector<double>& reaction_moment) {
   const double L = nominal.length;
-  const int nuis = NuisanceClampIndex(nominal);
-  const int nn = nuis >= 0 ? 1 : 0;
-  auto with_nuisance = [nominal, nuis](const Eigen::VectorXd& x, int k) {
-    RodSpec s = nominal;
-    if (nuis >= 0) ApplyNuisanceTwist(nuis, x[k], &s);
-    return s;
-  };
-  auto scales = [nn](std::initializer_list<double> phys) {
-    Eigen::VectorXd s(static_cast<int>(phys.size()) + nn);
+  auto scales = [](std::initializer_list<double> phys) {
+    Eigen::VectorXd s(static_cast<int>(phys.size()));
     int i = 0;
     for (double v : phys) s[i++] = v;
-    if (nn) s[i] = 0.05;
     return s;
   };
   std::vector<EffectModel> models;
 
-  {  // none: only the nuisance.
+  {
     EffectModel m;
     m.effect = "none";
     m.scale = scales({});
     m.starts = {Eigen::VectorXd(0)};
-    m.apply = [=](const Eigen::VectorXd& x) { return with_nuisance(x, 0); };
+    m.apply = [=](const Eigen::VectorXd&) { return nominal; };
     models.push_back(m);
   }
   {  // Natural curvature over [c - w/2, c + w/2], material-frame components.
@@ -66,7 +51,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
         m.starts.push_back(x);
       }
     m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = with_nuisance(x, 4);
+      RodSpec s = nominal;
       const double w = std::clamp(std::abs(x[1]), 0.01 * L, L);
       NaturalCurvatureSpec nc;
       nc.s_start = std::clamp(x[0] - w / 2, 0.0, L);
@@ -89,7 +74,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.scale = scales({0.02, 0.02});
     m.starts = {Eigen::VectorXd::Zero(2)};
     m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = with_nuisance(x, 2);
+      RodSpec s = nominal;
       SupportSpec& sp = s.supports[k];
       const Frame f = FrameOf(sp);
       const Vec3 rv = x[0] * f.d1 + x[1] * f.d2;
@@ -111,7 +96,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.scale = scales({0.05});
     m.starts = {Eigen::VectorXd::Zero(1)};
     m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = with_nuisance(x, 1);
+      RodSpec s = nominal;
       s.material.linear_density *= std::exp(x[0]);
       return s;
     };
@@ -124,13 +109,17 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.physical_parameters = 2;
     m.names = {"u1", "u2"};
     m.scale = scales({0.05, 0.05});
-    for (int i = 0; i < 8; ++i) {
-      Eigen::VectorXd x(2);
-      x << 0.25 * std::cos(i * M_PI / 4), 0.25 * std::sin(i * M_PI / 4);
-      m.starts.push_back(x);
-    }
+    // (u1, u2) -> -(u1, u2) is the inverse ratio at the same angle, i.e. the same ratio a
+    // quarter-turn on: eight directions cover the principal angle's half-turn with both branches
+    // of the ratio; two radii (ratio 1.35 and 2.2) so that a strong anisotropy starts near.
+    for (double radius : {0.15, 0.4})
+      for (int i = 0; i < 8; ++i) {
+        Eigen::VectorXd x(2);
+        x << radius * std::cos(i * M_PI / 4), radius * std::sin(i * M_PI / 4);
+        m.starts.push_back(x);
+      }
     m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = with_nuisance(x, 2);
+      RodSpec s = nominal;
       const double u = std::hypot(x[0], x[1]);
       s.material.bending_ratio = std::exp(2.0 * u);
       s.material.principal_angle = 0.5 * std::atan2(x[1], x[0]);
@@ -151,24 +140,28 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
       m.starts.push_back(x);
     }
     m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = with_nuisance(x, 4);
+      RodSpec s = nominal;
       s.point_loads.push_back({std::clamp(x[0], 0.02 * L, 0.98 * L), Vec3(x[1], x[2], x[3])});
       return s;
     };
     models.push_back(m);
   }
-  if (nuis >= 0) {  // The far clamp's twist itself, free of the prior on the nuisance.
+  for (int k = 0; k < static_cast<int>(nominal.supports.size()); ++k) {
+    if (nominal.supports[k].kind != SupportKind::kClamp) continue;
+    // The clamp rotated about the cable axis from the case's normal (right-hand rule about its
+    // tangent). The shape is periodic and far from quadratic in the angle, so it is started
+    // around the circle.
     EffectModel m;
     m.effect = "twist_preload";
-    m.clamp = nuis;
+    m.clamp = k;
     m.physical_parameters = 1;
-    m.has_nuisance = false;
-    m.names = {"rotation"};
-    m.scale = Eigen::VectorXd::Constant(1, 0.05);
-    m.starts = {Eigen::VectorXd::Zero(1)};  // DiagnoseShape starts it from the fitted nuisance
+    m.names = {"angle"};
+    m.scale = scales({0.05});
+    for (double a : {0.0, 0.8, -0.8, 1.6, -1.6, 2.4, -2.4})
+      m.starts.push_back(Eigen::VectorXd::Constant(1, a));
     m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = nominal;
-      ApplyNuisanceTwist(nuis, x[0], &s);
+      RotateClampAboutTangent(k, x[0], &s);
       return s;
     };
     models.push_back(m);
@@ -185,7 +178,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     const double c0 = 0.02 / std::max(moment, 1e-9);
     for (double f : {0.3, 3.0}) m.starts.push_back(Eigen::VectorXd::Constant(1, std::log(f * c0)));
     m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = with_nuisance(x, 1);
+      RodSpec s = nominal;
       s.supports[k].compliance = Mat3::Identity() * std::exp(std::clamp(x[0], -60.0, 20.0));
       return s;
     };

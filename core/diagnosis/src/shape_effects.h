@@ -1,9 +1,7 @@
 // The catalogue's shape effects as parametrised changes of the nominal RodSpec
-// (recording-v1.md, "The catalogue of effects"). Every model but twist_preload
-// also carries, as its last parameter, the far clamp's rotation about its own
-// tangent (from the case's normal): the twist a clamp imposes is uncertain (see
-// DiagnoseShape), so it is fitted in every model alike under a prior;
-// twist_preload is that rotation without the prior.
+// (recording-v1.md, "The catalogue of effects"). The case's clamp frames are taken as given:
+// a clamp's twist about the cable is the one its normal states unless twist_preload says
+// otherwise.
 #pragma once
 
 #include <Eigen/Core>
@@ -21,20 +19,14 @@ struct EffectModel {
   int physical_parameters = 0;          // counted by the selection criterion
   std::optional<int> clamp;             // clamp (support) index for clamp effects
   std::vector<std::string> names;       // physical parameter names (for reports)
-  Eigen::VectorXd scale;                // typical size of every parameter (incl. the nuisance)
+  Eigen::VectorXd scale;                // typical size of every parameter
   std::vector<Eigen::VectorXd> starts;  // starting physical parameters
-  /// Carries the nuisance twist as its last parameter (all but twist_preload).
-  bool has_nuisance = true;
-  /// Parameters (physical..., nuisance twist) -> the changed spec.
+  /// Parameters -> the changed spec.
   std::function<RodSpec(const Eigen::VectorXd&)> apply;
 };
 
-/// Index of the support whose twist is the nuisance parameter (last clamp), or
-/// -1.
-int NuisanceClampIndex(const RodSpec& nominal);
-
-/// Applies the nuisance rotation (radians about the clamp tangent) to `spec`.
-void ApplyNuisanceTwist(int clamp, double angle, RodSpec* spec);
+/// Rotates support `clamp`'s normal by `angle` [rad] about its tangent (right-hand rule).
+void RotateClampAboutTangent(int clamp, double angle, RodSpec* spec);
 
 /// Every fittable model for `nominal`; "none" comes first. `reaction_moment[k]`
 /// is the nominal moment magnitude at support k [N m] (scales the compliance

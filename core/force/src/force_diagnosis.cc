@@ -184,6 +184,17 @@ ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& t
     fail(e.what());
   }
   problem.peak = problem.nominal.cwiseAbs().maxCoeff();
+  {
+    // A stiffness off by two orders of magnitude is not a cable that differs from its data
+    // sheet but a set-up that does not belong to the recording (units, length, stiffness).
+    const double recorded_peak = curve.y.cwiseAbs().maxCoeff();
+    if (recorded_peak > 0.0 &&
+        !(problem.peak > 0.01 * recorded_peak && problem.peak < 100.0 * recorded_peak)) {
+      fail("the recorded " + std::string(curve.y_name.empty() ? "response" : curve.y_name) +
+           " peaks at " + Num(recorded_peak) + ", the nominal model's at " + Num(problem.peak) +
+           ": orders of magnitude apart, check the units and the case's length and stiffness");
+    }
+  }
   if (!(problem.peak > 0.0)) problem.peak = curve.y.cwiseAbs().maxCoeff();
   if (!(problem.peak > 0.0)) fail("nominal and recorded curves are zero");
 
@@ -212,13 +223,15 @@ ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& t
   return out;
 }
 
-ForceCaseDiagnosis CombineForceDiagnoses(const std::vector<ForceDiagnosis>& curves) {
+ForceCaseDiagnosis CombineForceDiagnoses(const std::vector<ForceDiagnosis>& curves,
+                                         const ForceDiagnosisOptions& options) {
   if (curves.empty()) throw InvalidInput("force diagnosis: the case has no force curves");
   ForceCaseDiagnosis out;
   std::vector<double> criteria;
   for (ForceEffect e : kAllEffects) {
     double sum = 0.0;
     for (const ForceDiagnosis& d : curves) sum += CandidateFor(d, e).criterion;
+    sum -= static_cast<double>(curves.size() - 1) * options.complexity_margin * ComplexityRank(e);
     criteria.push_back(sum);
   }
   const std::vector<double> scores = Scores(criteria);

@@ -9,7 +9,6 @@
 #include "cablefit/core/force/force_nnls.h"
 
 namespace cablefit {
-namespace {
 
 int ComplexityRank(ForceEffect effect) {
   switch (effect) {
@@ -22,6 +21,8 @@ int ComplexityRank(ForceEffect effect) {
   }
   return 0;
 }
+
+namespace {
 
 // Slip displacements of the Iwan grid [x unit], log-spaced over the recorded range.
 std::vector<double> SlipGrid(const Eigen::VectorXd& x, const ForceDiagnosisOptions& options) {

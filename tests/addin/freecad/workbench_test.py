@@ -2,7 +2,7 @@
 # with a spline cable and a clip solid goes through the same functions the GUI commands call, and
 # the results are checked against the `cablefit` CLI run on the same input files.
 # Environment: CABLEFIT_FC_CASE (which test), CABLEFIT_CLI, CABLEFIT_MODULE_DIR,
-# CABLEFIT_WORKBENCH_DIR, CABLEFIT_SHARED_DIR, CABLEFIT_TEST_OUT.
+# CABLEFIT_WORKBENCH_DIR, CABLEFIT_SHARED_DIR (the repository's tests/data), CABLEFIT_TEST_OUT.
 # freecadcmd prints a script's exception but exits 0: every failure ends in sys.exit(1).
 import json
 import os

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <map>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/force/force_rig.h"
@@ -55,6 +56,35 @@ TEST(ForceDiagnosis, CombinesCurvesOfOneCase) {
     EXPECT_NEAR(single.confidence, d.confidence, 1e-12);
   }
   EXPECT_THROW_WITH(CombineForceDiagnoses({}), InvalidInput, "no force curves");
+}
+
+// Two curves of one case are one hypothesis per effect: their likelihoods add, the prior against
+// complexity is counted once (summing it per curve made a case with two hysteretic curves
+// demand twice the evidence of one).
+TEST(ForceDiagnosis, JointCurvesCountTheComplexityPriorOnce) {
+  const auto cases = testing::LoadPublicForceCases();
+  ASSERT_GE(cases.size(), 2u);
+  const ForceDiagnosisOptions options;
+  std::vector<ForceDiagnosis> d;
+  for (size_t i = 0; i < 2; ++i)
+    d.push_back(DiagnoseForceCurve(cases[i].rod, cases[i].test, cases[i].curve, options));
+  const ForceCaseDiagnosis joint = CombineForceDiagnoses(d, options);
+  std::map<ForceEffect, double> criterion;
+  double best = INFINITY;
+  for (const ForceCandidate& c : d[0].candidates) {
+    double sum = -options.complexity_margin * (c.effect == ForceEffect::kNone        ? 0
+                                               : c.effect == ForceEffect::kStiffness ? 1
+                                                                                     : 2);
+    for (const ForceDiagnosis& one : d)
+      for (const ForceCandidate& o : one.candidates)
+        if (o.effect == c.effect) sum += o.criterion;
+    criterion[c.effect] = sum;
+    best = std::min(best, sum);
+  }
+  double total = 0.0;
+  for (const auto& [e, c] : criterion) total += std::exp(-0.5 * (c - best));
+  for (const auto& [e, score] : joint.candidates)
+    EXPECT_NEAR(score, std::exp(-0.5 * (criterion[e] - best)) / total, 1e-9) << ToString(e);
 }
 
 TEST(ForceDiagnosis, CaseWithSofterBendingAndNominalTorsionIsStiffness) {

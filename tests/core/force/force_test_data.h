@@ -111,7 +111,7 @@ struct PublicForceCase {
 /// Every public case whose case.json records a force_curve (found by content, not by name).
 inline std::vector<PublicForceCase> LoadPublicForceCases() {
   std::vector<PublicForceCase> out;
-  const auto root = SharedDir() / "cases" / "public";
+  const auto root = PublicCasesDir();
   std::vector<std::filesystem::path> dirs;
   for (const auto& e : std::filesystem::directory_iterator(root)) dirs.push_back(e.path());
   std::sort(dirs.begin(), dirs.end());

@@ -14,10 +14,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using testing::FreshTempDir;
-using testing::SharedDir;
+using testing::PublicCasesDir;
 using testing::WriteText;
 
-fs::path PublicCases() { return SharedDir() / "cases" / "public"; }
+fs::path PublicCases() { return PublicCasesDir(); }
 
 std::vector<fs::path> PublicCaseDirs() {
   std::vector<fs::path> dirs;

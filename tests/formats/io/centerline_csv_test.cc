@@ -25,7 +25,7 @@ TEST(CenterlineCsv, ReadsPublicCenterlines) {
                 {"sample-twist_preload", 0.4289, 249}};
   for (const auto& c : kCases) {
     SCOPED_TRACE(c.name);
-    const auto path = testing::SharedDir() / "cases" / "public" / c.name / "centerline.csv";
+    const auto path = testing::PublicCasesDir() / c.name / "centerline.csv";
     const Polyline line = ReadCenterlineCsv(path.string());
     ASSERT_EQ(line.size(), c.rows);
     ASSERT_EQ(line.s.size(), line.points.cols());

@@ -13,7 +13,7 @@ using testing::FreshTempDir;
 using testing::WriteText;
 
 TEST(ForceCurveCsv, ReadsPublicCurves) {
-  const auto root = testing::SharedDir() / "cases" / "public";
+  const auto root = testing::PublicCasesDir();
   const ForceCurve bending = ReadForceCurveCsv((root / "sample-force-hysteresis" / "bending.csv").string());
   EXPECT_EQ(bending.x_name, "displacement");
   EXPECT_EQ(bending.y_name, "force");

@@ -33,7 +33,7 @@ void Put(std::string* out, T value, bool big_endian) {
 
 TEST(PlyReader, ReadsEveryPublicScan) {
   int scans = 0;
-  for (const auto& e : fs::directory_iterator(testing::SharedDir() / "cases" / "public")) {
+  for (const auto& e : fs::directory_iterator(testing::PublicCasesDir())) {
     const auto ply = e.path() / "scan.ply";
     if (!fs::exists(ply)) continue;
     SCOPED_TRACE(ply.string());

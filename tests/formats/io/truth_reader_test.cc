@@ -14,11 +14,11 @@ namespace fs = std::filesystem;
 using testing::FreshTempDir;
 using testing::WriteText;
 
-fs::path PublicCase(const char* name) { return testing::SharedDir() / "cases" / "public" / name; }
+fs::path PublicCase(const char* name) { return testing::PublicCasesDir() / name; }
 
 TEST(TruthReader, ReadsEveryPublicTruth) {
   int n = 0;
-  for (const auto& e : fs::directory_iterator(testing::SharedDir() / "cases" / "public")) {
+  for (const auto& e : fs::directory_iterator(testing::PublicCasesDir())) {
     if (!fs::exists(e.path() / "truth.json")) continue;
     SCOPED_TRACE(e.path().string());
     ++n;

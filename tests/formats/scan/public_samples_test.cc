@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> ScanCases() {
   std::vector<fs::path> out;
-  const fs::path root = testing::SharedDir() / "cases" / "public";
+  const fs::path root = testing::PublicCasesDir();
   if (!fs::exists(root)) return out;
   for (const auto& e : fs::directory_iterator(root))
     if (fs::exists(e.path() / "scan.ply") && fs::exists(e.path() / "truth.json")) out.push_back(e.path());
@@ -30,7 +30,7 @@ std::vector<fs::path> ScanCases() {
 
 TEST(PublicScanSamples, CentrelineNoiseAndGapsMatchTruth) {
   const auto cases = ScanCases();
-  ASSERT_GE(cases.size(), 1u) << "no public scan cases under " << testing::SharedDir();
+  ASSERT_GE(cases.size(), 1u) << "no public scan cases under " << testing::PublicCasesDir();
   for (const fs::path& dir : cases) {
     SCOPED_TRACE(dir.filename().string());
     const RecordingCase rc = ReadRecordingCase((dir / "case.json").string());

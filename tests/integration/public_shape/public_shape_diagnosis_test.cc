@@ -37,7 +37,7 @@ ShapeObservation FromScan(const RecordingCase& rc, const std::string& ply) {
 }
 
 TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
-  const fs::path root = testing::SharedDir() / "cases" / "public";
+  const fs::path root = testing::PublicCasesDir();
   std::vector<fs::path> dirs;
   for (const auto& e : fs::directory_iterator(root))
     if (fs::exists(e.path() / "scan.ply")) dirs.push_back(e.path());
@@ -64,6 +64,10 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
       std::printf("      interval [%.3f %.3f] truth [%.3f %.3f] IoU %.2f\n", dg.interval->first,
                   dg.interval->second, truth.interval->first, truth.interval->second,
                   IoU(*dg.interval, *truth.interval));
+    std::printf("      explained %d: chi-square %.1f, limit %.1f (dof %d, noise %.1f um)\n",
+                dg.explained, dg.adequacy.chi_square, dg.adequacy.limit,
+                dg.adequacy.degrees_of_freedom, dg.adequacy.noise_sigma * 1e6);
+    EXPECT_TRUE(dg.explained) << d;
     if (dg.effect == truth.effect) ++correct;
     if (dg.effect != truth.effect || truth.effect == "none") continue;
     // Localised and quantified.

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path Public(const std::string& name) {
-  return testing::SharedDir() / "cases" / "public" / name;
+  return testing::PublicCasesDir() / name;
 }
 
 /// Copies public case `from` to `root/to` under the name `to`, keeping only the recordings of

@@ -51,6 +51,7 @@ struct DiagnosedCase {
   std::string deviation_unit = "m";  // "m", or the force curve's "N" / "N m"
   std::string explanation;
   std::vector<std::pair<std::string, double>> candidates;  // (effect, score), best first
+  bool explained = true;  // false: nothing in the catalogue fits the recording within its noise
 
   // ---- shape cases ----
   std::optional<ShapeDiagnosis> shape;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/geometry_types.h"
 #include "cablefit/core/solver/rod_solution.h"
 #include "cablefit/core/rod/rod_spec.h"
@@ -35,10 +36,13 @@ struct ShapeDiagnosisOptions {
   double min_bic_gain = 10.0;
   /// Only use at most this many observation points (evenly thinned) in the fits.
   int max_points = 400;
-  /// How far the far clamp's twist about the cable axis may be from the nominal one (the case's
-  /// normal, or the torque-free twist) before it counts as a twist_preload [rad]: the standard
-  /// deviation of the prior on it. 0 = the twist is free in every model (no twist_preload).
-  double twist_sigma = 0.25;
+  /// The adequacy test lets the best fit scatter up to this many times the recording's own
+  /// noise estimate [-]: a scan's centre noise comes from the scatter of its circle fits and
+  /// misses the errors the slices share (partial arcs, outliers near the fit), and a measured
+  /// centreline's from its fourth differences, which miss smooth errors. Measured: right models
+  /// leave 1.0-2.0 times the estimate on the public scans and the concealed corpus; a set-up that
+  /// does not match leaves hundreds.
+  double noise_allowance = 3.0;
   ProgressCallback progress;
 
   bool IsValid(std::string* why) const;
@@ -57,9 +61,25 @@ struct EffectCandidate {
   bool converged = true;
 };
 
+/// Whether the best fit explains the recording: its residual against the recording's own noise.
+struct ShapeAdequacy {
+  std::string best_effect;     // the model with the smallest residual
+  int points = 0;              // thinned points the fits used
+  int degrees_of_freedom = 0;  // 2 points - the best model's parameters
+  double chi_square = 0.0;     // |offsets|^2 / (noise_allowance noise_sigma)^2 of the best fit
+  double limit = 0.0;          // 99.9 % quantile of chi-square at those degrees of freedom
+  double noise_sigma = 0.0;    // [m] the recording's centre-point noise
+  double noise_allowance = 1.0;  // ShapeDiagnosisOptions::noise_allowance
+};
+
 struct ShapeDiagnosis {
   std::string effect = "none";
   double confidence = 0.0;
+  /// False when no catalogue effect (nor none) fits within the noise: then `effect` is only the
+  /// best candidate, `confidence` is low and the explanation says what to check.
+  bool explained = true;
+  ShapeAdequacy adequacy;
+  std::vector<std::string> notes;  // what was done to the recording (e.g. reversed)
   std::optional<std::pair<double, double>> interval;  // [m]
   std::optional<int> clamp;
   std::map<std::string, double> parameters;   // spec names: curvature, angle, ratio, force, ...
@@ -77,7 +97,14 @@ struct ShapeDiagnosis {
   double seconds = 0.0;
 };
 
-/// Throws InvalidInput for an invalid spec or an empty observation.
+/// The recording cannot belong to the set-up it came with (the recording, not the case, is named).
+class RecordingMismatch : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
+/// Throws InvalidInput for an invalid spec, an empty observation, or a recording that cannot lie
+/// between the clamps (RecordingMismatch: points out of the cable's reach, wrong units, wrong case).
 ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& observation,
                              const ShapeDiagnosisOptions& options = {});
 

@@ -98,8 +98,9 @@ struct ForceDiagnosis {
 };
 
 /// Diagnoses one recorded curve against the nominal rod and rig. Throws InvalidInput for too
-/// few rows, mismatched or non-finite columns, displacements outside the rig's geometry, or
-/// invalid options. `file` only labels the result.
+/// few rows, mismatched or non-finite columns, displacements outside the rig's geometry, a
+/// recorded response orders of magnitude from the nominal one (units, length, stiffness: not a
+/// catalogue effect), or invalid options. `file` only labels the result.
 ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& test,
                                   const ForceCurve& curve,
                                   const ForceDiagnosisOptions& options = {},
@@ -121,7 +122,11 @@ struct ForceCaseDiagnosis {
   std::vector<ForceDiagnosis> curves;  ///< each re-expressed with the case-level effect
 };
 
-/// Combines the diagnoses of all force curves of one case. Throws InvalidInput if empty.
-ForceCaseDiagnosis CombineForceDiagnoses(const std::vector<ForceDiagnosis>& curves);
+/// Combines the diagnoses of all force curves of one case: the curves' likelihoods are joint
+/// (criteria summed), and the prior against complexity (options.complexity_margin) is counted
+/// once, because the effect is one hypothesis about the cable, however many curves test it.
+/// Throws InvalidInput if empty.
+ForceCaseDiagnosis CombineForceDiagnoses(const std::vector<ForceDiagnosis>& curves,
+                                         const ForceDiagnosisOptions& options = {});
 
 }  // namespace cablefit

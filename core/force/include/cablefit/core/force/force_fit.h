@@ -17,9 +17,11 @@ struct ForceFitProblem {
   double peak = 0.0;        // [N] or [N m], max |nominal|, sets the offset prior and floors
 };
 
+/// Steps of complexity from `none`: 0, 1, 2 for none, stiffness, hysteresis.
+int ComplexityRank(ForceEffect effect);
+
 /// Fits `effect` to `problem`. Fills every ForceCandidate field except `score`.
-/// Complexity rank (0, 1, 2 for none, stiffness, hysteresis) times options.complexity_margin is
-/// included in `criterion`.
+/// ComplexityRank(effect) times options.complexity_margin is included in `criterion`.
 ForceCandidate FitForceCandidate(ForceEffect effect, const ForceFitProblem& problem,
                                  const ForceDiagnosisOptions& options);
 
