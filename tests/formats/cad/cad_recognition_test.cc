@@ -36,17 +36,13 @@ TEST(CadRecognition, FreeCadSweptTubesAreFoundWithTheirDiametersAndStubsAreParts
   for (const DrawnCable& c : d.cables) {
     if (c.source == CableSourceKind::kTube) EXPECT_GE(Length(c), 10 * c.diameter) << c.name;
   }
-  // The long swept cables: three 3 mm wires, two hollow conduits (8 and 6.2 mm) and the 9 mm
-  // three-core cable, each over half a metre.
+  // The long swept cables: three 3 mm wires, two conduits (8 and 6.2 mm, drawn solid) and the
+  // 9 mm three-core cable, each over half a metre.
   std::vector<double> long_diameters;
-  int hollow = 0;
   for (const DrawnCable& c : d.cables) {
     if (c.source != CableSourceKind::kTube || Length(c) < 0.5) continue;
     long_diameters.push_back(c.diameter);
-    if (c.inner_diameter > 0) {
-      ++hollow;
-      EXPECT_LT(c.inner_diameter, c.diameter) << c.name;
-    }
+    if (c.inner_diameter > 0) EXPECT_LT(c.inner_diameter, c.diameter) << c.name;
   }
   std::sort(long_diameters.begin(), long_diameters.end());
   ASSERT_EQ(long_diameters.size(), 6u);
@@ -54,7 +50,6 @@ TEST(CadRecognition, FreeCadSweptTubesAreFoundWithTheirDiametersAndStubsAreParts
   EXPECT_NEAR(long_diameters[3], 0.00618, 2e-4);
   EXPECT_NEAR(long_diameters[4], 0.00798, 2e-4);
   EXPECT_NEAR(long_diameters[5], 0.00901, 2e-4);
-  EXPECT_GE(hollow, 1);
   // The 8 mm end stubs and the three 180 mm ducts are parts, with the reason listed.
   EXPECT_GE(d.solids.size(), 3u + 6u);
   EXPECT_TRUE(std::any_of(d.skipped.begin(), d.skipped.end(), [](const std::string& s) {
