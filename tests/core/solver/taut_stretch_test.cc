@@ -34,18 +34,23 @@ TEST(TautStretch, SingleRodFailureNamesTheTautStretch) {
   EXPECT_NE(r.solution.summary.message.find("0.8 m apart"), std::string::npos) << r.solution.summary.message;
 }
 
-TEST(TautStretch, NetworkFailureNamesTheTautStretch) {
+// A one-branch network drawn straight between two clamps 0.8 m apart.
+NetworkSolution SolveStraightNetwork(const MaterialSpec& material) {
   NetworkSpec spec;
   BranchSpec b;
   b.name = "taut";
   b.length = 0.8;
-  b.material = TestMaterial(0.05, 0.1, 0.008);
+  b.material = material;
   b.route = StraightRoute(Vec3::Zero(), Vec3(0.8, 0, 0));
   b.supports = {Clamp(0.0, Vec3::Zero(), Vec3::UnitX()), Clamp(0.8, Vec3(0.8, 0, 0), Vec3::UnitX())};
   spec.branches = {b};
   NetworkOptions opt;
   opt.element_length = 0.01;
-  const NetworkSolution sol = SolveNetwork(spec, opt);
+  return SolveNetwork(spec, opt);
+}
+
+TEST(TautStretch, NetworkFailureNamesTheTautStretch) {
+  const NetworkSolution sol = SolveStraightNetwork(TestMaterial(0.05, 0.1, 0.008));
   ASSERT_FALSE(sol.converged());
   EXPECT_NE(sol.summary.message.find("taut"), std::string::npos) << sol.summary.message;
 }
@@ -96,18 +101,9 @@ TEST(TautStretch, AxialStiffnessBarelyMovesACableWithSlack) {
 }
 
 TEST(TautStretch, NetworkWithAxialStiffnessHangsToo) {
-  NetworkSpec spec;
-  BranchSpec b;
-  b.name = "taut";
-  b.length = 0.8;
-  b.material = TestMaterial(1e-4, 0.1, 0.008);
-  b.material.axial_stiffness = 1e4;
-  b.route = StraightRoute(Vec3::Zero(), Vec3(0.8, 0, 0));
-  b.supports = {Clamp(0.0, Vec3::Zero(), Vec3::UnitX()), Clamp(0.8, Vec3(0.8, 0, 0), Vec3::UnitX())};
-  spec.branches = {b};
-  NetworkOptions opt;
-  opt.element_length = 0.01;
-  const NetworkSolution sol = SolveNetwork(spec, opt);
+  MaterialSpec material = TestMaterial(1e-4, 0.1, 0.008);
+  material.axial_stiffness = 1e4;
+  const NetworkSolution sol = SolveStraightNetwork(material);
   EXPECT_TRUE(sol.converged()) << sol.summary.message;
 }
 
