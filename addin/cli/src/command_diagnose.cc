@@ -19,6 +19,7 @@
 #include "cablefit/app/report_case.h"
 #include "cablefit/app/report_html.h"
 #include "cablefit/app/report_summary.h"
+#include "terminal_text.h"
 
 namespace cablefit::addin {
 namespace {
@@ -72,14 +73,14 @@ int RunDiagnose(const DiagnoseArgs& a) {
       good_paths.push_back(p);
     } catch (const FileError& e) {
       failures.push_back(e.what());
-      std::fprintf(stderr, "cablefit: %s\n", e.what());
+      std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     }
   }
   CaseFileList list;
   if (!good_paths.empty()) list = FindCaseFiles(good_paths);
   for (const FileError& e : list.errors) {
     failures.push_back(e.what());
-    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
   }
   const int n = static_cast<int>(list.files.size());
   if (n == 0) {
@@ -141,13 +142,13 @@ int RunDiagnose(const DiagnoseArgs& a) {
     WriteRunSummary((out_dir / "report.html").string(), rows, total, jobs);
   } catch (const std::exception& e) {
     failures.push_back(e.what());
-    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
   }
   std::printf("%d of %d case(s) diagnosed in %s; summary: %s\n", diagnosed, n,
-              FormatSeconds(total).c_str(), (out_dir / "report.html").string().c_str());
+              FormatSeconds(total).c_str(), TerminalSafe((out_dir / "report.html").string()).c_str());
   if (!failures.empty()) {
     std::fprintf(stderr, "cablefit: %zu input(s) failed:\n", failures.size());
-    for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", f.c_str());
+    for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(f).c_str());
   }
   if (diagnosed == 0) return kExitUsage;
   return failures.empty() ? kExitOk : kExitSomeFailed;

@@ -4,6 +4,7 @@
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/errors.h"
+#include "terminal_text.h"
 
 namespace cablefit::addin {
 
@@ -24,15 +25,15 @@ int RunCommandLine(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     std::fprintf(stderr, "run 'cablefit --help' for usage\n");
     return kExitUsage;
   } catch (const InvalidInput& e) {
     // Typed user-input errors arrive here as one line "<file>: <problem>".
-    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     return kExitUsage;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "cablefit: %s\n", e.what());
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     return kExitUsage;
   }
   return exit_code;

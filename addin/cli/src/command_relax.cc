@@ -22,6 +22,7 @@
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
+#include "terminal_text.h"
 
 namespace cablefit::addin {
 namespace {
@@ -128,7 +129,7 @@ int RunRelax(const RelaxArgs& a) {
 
   std::vector<std::string> failures;  // "<file>: <problem>"
   const std::vector<std::string> paths = ExpandInputs(a.inputs, &failures);
-  for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", f.c_str());
+  for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(f).c_str());
   const std::vector<std::string> stems = UniqueStems(paths);
   const int n = static_cast<int>(paths.size());
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
@@ -285,7 +286,7 @@ int RunRelax(const RelaxArgs& a) {
   bar.Finish(3 * n);
   if (!failures.empty()) {
     std::fprintf(stderr, "cablefit: relax: %zu failure(s):\n", failures.size());
-    for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", f.c_str());
+    for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", TerminalSafe(f).c_str());
   }
   if (!any_read) {
     std::fprintf(stderr, "cablefit: relax: no input could be read\n");

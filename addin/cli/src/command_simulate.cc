@@ -8,6 +8,7 @@
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/app/solution_json.h"
+#include "terminal_text.h"
 
 namespace cablefit::addin {
 namespace {
@@ -44,13 +45,13 @@ int RunSimulate(const SimulateArgs& a) {
   WriteCenterlineCsv((dir / "centerline.csv").string(), out);
   json::WriteJsonFile((dir / "solution.json").string(), SolutionToJson(rc.name, rc.nominal, r));
   std::printf("%s: %s, %d elements, %d Newton iterations, est. error %.1e m, %s, %.1f ms\n",
-              rc.name.c_str(), r.converged ? "converged" : "NOT CONVERGED",
+              TerminalSafe(rc.name).c_str(), r.converged ? "converged" : "NOT CONVERGED",
               r.level_elements.empty() ? 0 : r.level_elements.back(), r.newton_iterations,
               r.estimated_error, r.solution.summary.stable ? "stable" : "UNSTABLE",
               r.seconds * 1e3);
   if (!r.converged) {
-    std::fprintf(stderr, "cablefit: %s: solver did not converge: %s\n", rc.case_file.c_str(),
-                 r.solution.summary.message.c_str());
+    std::fprintf(stderr, "cablefit: %s: solver did not converge: %s\n",
+                 TerminalSafe(rc.case_file).c_str(), r.solution.summary.message.c_str());
     return kExitSomeFailed;
   }
   return kExitOk;

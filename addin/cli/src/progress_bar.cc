@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "terminal_text.h"
+
 namespace cablefit::addin {
 
 namespace {
@@ -31,7 +33,7 @@ void ProgressBar::Update(int item, double fraction, const std::string& stage) {
   std::lock_guard lock(mutex_);
   if (item < 0 || item >= static_cast<int>(fraction_.size())) return;
   fraction_[static_cast<std::size_t>(item)] = std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0);
-  if (!stage.empty()) stage_ = stage;
+  if (!stage.empty()) stage_ = TerminalSafe(stage);
   DrawLocked(false);
 }
 
@@ -46,7 +48,7 @@ void ProgressBar::Finish(int item) {
 void ProgressBar::PrintLine(std::FILE* out, const std::string& line) {
   std::lock_guard lock(mutex_);
   EraseLocked();
-  std::fprintf(out, "%s\n", line.c_str());
+  std::fprintf(out, "%s\n", TerminalSafe(line).c_str());
   std::fflush(out);
   DrawLocked(true);
 }

@@ -34,7 +34,9 @@ TEST(CadRecognition, FreeCadSweptTubesAreFoundWithTheirDiametersAndStubsAreParts
   ExpectDistinctNonEmptyNames(d);
   // Every cable is slender: at least 10 diameters long.
   for (const DrawnCable& c : d.cables) {
-    if (c.source == CableSourceKind::kTube) EXPECT_GE(Length(c), 10 * c.diameter) << c.name;
+    if (c.source == CableSourceKind::kTube) {
+      EXPECT_GE(Length(c), 10 * c.diameter) << c.name;
+    }
   }
   // The long swept cables: three 3 mm wires, two conduits (8 and 6.2 mm, drawn solid) and the
   // 9 mm three-core cable, each over half a metre.
@@ -42,7 +44,9 @@ TEST(CadRecognition, FreeCadSweptTubesAreFoundWithTheirDiametersAndStubsAreParts
   for (const DrawnCable& c : d.cables) {
     if (c.source != CableSourceKind::kTube || Length(c) < 0.5) continue;
     long_diameters.push_back(c.diameter);
-    if (c.inner_diameter > 0) EXPECT_LT(c.inner_diameter, c.diameter) << c.name;
+    if (c.inner_diameter > 0) {
+      EXPECT_LT(c.inner_diameter, c.diameter) << c.name;
+    }
   }
   std::sort(long_diameters.begin(), long_diameters.end());
   ASSERT_EQ(long_diameters.size(), 6u);

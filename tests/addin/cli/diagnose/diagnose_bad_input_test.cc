@@ -141,5 +141,25 @@ TEST(DiagnoseBadInput, UsageErrorsAreExitTwo) {
   EXPECT_EQ(testing::RunCablefit("diagnose x --out y --jobs -3").exit_code, 2);
 }
 
+// A case name is input: printed raw, a newline in it could forge a result line and an escape
+// sequence could recolour the terminal. Control characters come out as \xNN.
+TEST(DiagnoseBadInput, ControlCharactersInNamesCannotForgeOutput) {
+  const fs::path root = testing::FreshTempDir("diag_ctrl");
+  const fs::path dir = CopyCase("sample-force-none", root, "ctrl");
+  json::Json c = json::ReadJsonFile((dir / "case.json").string());
+  c["name"] = "ctrl\nFAKE: none, confidence 1.00\x1b[31m\x07";
+  json::WriteJsonFile((dir / "case.json").string(), c);
+  const auto run = testing::RunCablefit("diagnose '" + dir.string() + "' --out '" +
+                                        (root / "out").string() + "'");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  for (const std::string& text : {run.out, run.err}) {
+    std::stringstream lines(text);
+    for (std::string line; std::getline(lines, line);) EXPECT_NE(line.rfind("FAKE", 0), 0u) << line;
+    EXPECT_EQ(text.find('\x1b'), std::string::npos);
+    EXPECT_EQ(text.find('\x07'), std::string::npos);
+  }
+  EXPECT_NE(run.out.find("ctrl\\x0aFAKE"), std::string::npos) << run.out;
+}
+
 }  // namespace
 }  // namespace cablefit
