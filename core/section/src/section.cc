@@ -1,4 +1,4 @@
-// Composite section properties, seed 000 section 4: eq. 2 integrated exactly over discs and
+// Composite section properties after Wienss et al. (section 4): eq. 2 integrated exactly over discs and
 // annuli (parallel-axis theorem about the E-weighted centre), eq. 4 and 9 for coaxial sections.
 #include "cablefit/core/section/section.h"
 

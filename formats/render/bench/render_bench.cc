@@ -1,4 +1,4 @@
-// Rendering throughput (reports, never asserts). Targets from issue 6: a 3-view map of one cable
+// Rendering throughput (reports, never asserts). Targets: a 3-view map of one cable
 // <= 0.5 s, a 30-cable harness <= 5 s, both at the default 1600 x 1000 with 2x supersampling.
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@
 //
 // Discretisation (why this one): a quaternion Cosserat/Kirchhoff rod on a staggered grid
 // (Lang, Linn & Arnold 2011, "Multi-body dynamics simulation of geometrically exact Cosserat
-// rods", the model behind seed 000's IPS Cable Simulation). Each element carries one unit
+// rods", the model behind IPS Cable Simulation). Each element carries one unit
 // quaternion (its material frame); node positions are prefix sums r_{i+1} = r_i + h_i d3_i, so the
 // rod is exactly inextensible and unshearable without penalty terms, and the only unknowns are
 // rotations. The discrete Darboux vector between neighbouring frame samples a, b is

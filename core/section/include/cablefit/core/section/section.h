@@ -1,6 +1,6 @@
 // Stiffness and mass of a composite cable cross-section made of circular discs and annuli (wires,
-// insulation, fillers, tapes, conduits, jackets), after seed 000 (shared/seeds/000_*.txt) section
-// 4 "Precomputation of Material Properties": eq. 1-2 bending stiffness matrix about the
+// insulation, fillers, tapes, conduits, jackets), after Wienss et al., "Simulation of wiring harnesses and hoses for product design and manufacturing",
+// section 4 "Precomputation of Material Properties": eq. 1-2 bending stiffness matrix about the
 // modulus-weighted centre, eq. 4 / 9 coaxial closed forms, eq. 5-6 Prandtl torsion (solved
 // numerically in section_torsion.h).
 #pragma once
@@ -22,7 +22,7 @@ using Mat2 = Eigen::Matrix2d;
 /// part straddling the boundary of a gap filler.
 void ValidateSection(const SectionSpec& spec);
 
-/// Closed forms for a coaxial section (all parts share one centre): seed 000 eq. 4 and eq. 9.
+/// Closed forms for a coaxial section (all parts share one centre): Wienss et al. eq. 4 and eq. 9.
 struct CoaxialClosedForm {
   bool applies = false;               // every part centred on one point (within 1e-9 * size)
   double bending_stiffness = 0.0;     // eq. 4, sum pi/4 E_i (R1^4 - R2^4) [N m^2]

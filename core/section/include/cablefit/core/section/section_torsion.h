@@ -1,5 +1,5 @@
-// Saint-Venant torsion of a bonded composite section by the Prandtl stress function, seed 000
-// eq. 5-6: div((1/G) grad phi) = -2 in the material, phi = 0 on the outer boundary,
+// Saint-Venant torsion of a bonded composite section by the Prandtl stress function, Wienss
+// et al. eq. 5-6: div((1/G) grad phi) = -2 in the material, phi = 0 on the outer boundary,
 // GJ = 2 * integral(phi) for unit twist rate.
 //
 // Discretisation (section_torsion.cc): finite volumes on a uniform Cartesian grid with the
