@@ -1,6 +1,6 @@
 // Stiffness and mass of a composite cable cross-section made of circular discs and annuli (wires,
-// insulation, fillers, tapes, conduits, jackets), after Wienss et al., "Simulation of wiring harnesses and hoses for product design and manufacturing",
-// section 4 "Precomputation of Material Properties": eq. 1-2 bending stiffness matrix about the
+// insulation, fillers, tapes, conduits, jackets), after Wienss et al., "Simulation of wiring
+// harnesses and hoses for product design and manufacturing", section 4 "Precomputation of Material Properties": eq. 1-2 bending stiffness matrix about the
 // modulus-weighted centre, eq. 4 / 9 coaxial closed forms, eq. 5-6 Prandtl torsion (solved
 // numerically in section_torsion.h).
 #pragma once
