@@ -1,6 +1,7 @@
 // Runs the built `cablefit` binary for end-to-end tests.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace cablefit::testing {
@@ -10,6 +11,14 @@ struct CliRun {
   std::string out;  // stdout
   std::string err;  // stderr
 };
+
+/// Shell-quoted path. Built with append: GCC 12 warns (-Wrestrict, a false positive) on
+/// "'" + std::string.
+inline std::string Q(const std::filesystem::path& p) {
+  std::string q(1, '\'');
+  q.append(p.string()).push_back('\'');
+  return q;
+}
 
 /// Path of the built cablefit binary.
 std::string CablefitBinary();

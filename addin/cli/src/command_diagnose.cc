@@ -15,6 +15,8 @@
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/app/diagnose_case.h"
 #include "cablefit/app/diagnose_output.h"
+#include "option_checks.h"
+#include "output_folder.h"
 #include "progress_bar.h"
 #include "cablefit/app/report_case.h"
 #include "cablefit/app/report_html.h"
@@ -31,17 +33,17 @@ struct DiagnoseArgs {
   double timeout = 0.0;  // [s] per case, 0 = no limit
 };
 
-/// A case name as a folder name: characters outside [A-Za-z0-9._-] become '_' so that a name
-/// can never leave DIR.
-std::string FolderName(const std::string& name) {
-  std::string out;
-  for (char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                    c == '.' || c == '_' || c == '-';
-    out += ok ? c : '_';
+/// Output folders, one per case, unique after sanitising ("left cable" and "left_cable" would
+/// share one) and never the run summary's own file name. Decided before any case runs, in the
+/// sorted order of the case files, so they do not depend on which case finishes first.
+std::vector<std::string> CaseFolders(const CaseFileList& list) {
+  std::vector<std::string> folders;
+  for (std::size_t i = 0; i < list.files.size(); ++i) {
+    const std::string fallback = std::filesystem::path(list.files[i]).parent_path().filename().string();
+    folders.push_back(SafeFileName(list.names[i].empty() ? fallback : list.names[i],
+                                   SafeFileName(fallback, "case")));
   }
-  if (out.empty() || out == "." || out == "..") out = "case";
-  return out;
+  return UniqueNames(folders, {"report.html"});
 }
 
 /// One line "<file>: <problem>" for any exception from one case.
@@ -88,7 +90,11 @@ int RunDiagnose(const DiagnoseArgs& a) {
     return kExitUsage;
   }
   const int jobs = ResolveJobs(a.jobs, n);
-  const std::filesystem::path out_dir(a.out_dir);
+  OutputFolder output(a.out_dir, a.paths);
+  output.AddInputs(list.files);
+  const std::filesystem::path& out_dir = output.path();
+  const std::vector<std::string> folders = CaseFolders(list);
+  for (const std::string& folder : folders) output.CheckFolder(out_dir / folder);
   std::vector<CaseOutcome> outcomes(static_cast<std::size_t>(n));
   std::mutex failures_mutex;
   {
@@ -105,7 +111,7 @@ int RunDiagnose(const DiagnoseArgs& a) {
           bar.Update(i, f, std::filesystem::path(file).parent_path().filename().string() + ": " + s);
           return true;
         });
-        const std::string folder = FolderName(d.recording.name);
+        const std::string& folder = folders[static_cast<std::size_t>(i)];
         const std::string dir = (out_dir / folder).string();
         WriteDiagnosisFiles(dir, d);
         WriteCaseReport(dir, d);
@@ -172,7 +178,7 @@ void RegisterDiagnoseCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--timeout", args->timeout,
                   "seconds one case may take; a case that takes longer is reported as failed "
                   "and the others go on (0 = no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(TimeoutSeconds());
   cmd->callback([args, exit_code] { *exit_code = RunDiagnose(*args); });
 }
 

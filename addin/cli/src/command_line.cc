@@ -1,5 +1,7 @@
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 
 #include "cablefit/cli/commands.h"
@@ -7,6 +9,23 @@
 #include "terminal_text.h"
 
 namespace cablefit::addin {
+
+namespace {
+
+// Result lines that never reached their reader (a full disk, a closed pipe, /dev/full) are a
+// failure, not success: for `section` and `bench` the standard output is the whole result.
+int CheckStandardOutput(const CLI::App& app, int exit_code) {
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && !std::ferror(stdout)) return exit_code;
+  std::fprintf(stderr, "cablefit: cannot write the standard output: %s\n",
+               error != 0 ? std::strerror(error) : "write error");
+  if (app.got_subcommand("section") || app.got_subcommand("bench")) return kExitUsage;
+  return exit_code == kExitOk ? kExitSomeFailed : exit_code;
+}
+
+}  // namespace
 
 int RunCommandLine(int argc, char** argv) {
   CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
@@ -36,7 +55,7 @@ int RunCommandLine(int argc, char** argv) {
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     return kExitUsage;
   }
-  return exit_code;
+  return CheckStandardOutput(app, exit_code);
 }
 
 }  // namespace cablefit::addin

@@ -17,6 +17,8 @@
 #include "cablefit/core/base/deadline.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/app/harness_config.h"
+#include "option_checks.h"
+#include "output_folder.h"
 #include "progress_bar.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
@@ -131,10 +133,18 @@ int RunRelax(const RelaxArgs& a) {
   const std::vector<std::string> paths = ExpandInputs(a.inputs, &failures);
   for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(f).c_str());
   const std::vector<std::string> stems = UniqueStems(paths);
+  std::vector<std::string> inputs = a.inputs;
+  inputs.insert(inputs.end(), paths.begin(), paths.end());
+  if (!a.config.empty()) inputs.push_back(a.config);
+  const OutputFolder output(a.out_dir, inputs);
+  const fs::path& out = output.path();
+  output.CheckFile(out / "report.html");
+  for (const std::string& stem : stems) {
+    for (const char* suffix : {".step", ".json", "-deviation.png"}) output.CheckFile(out / (stem + suffix));
+  }
   const int n = static_cast<int>(paths.size());
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
   std::mutex cad_mutex, failures_mutex;
-  const fs::path out(a.out_dir);
   ProgressBar bar(3 * n + 1);
   auto fail = [&](RelaxedFile& f, const std::string& problem) {
     std::lock_guard lock(failures_mutex);
@@ -315,7 +325,7 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--timeout", args->timeout,
                   "seconds one cable may take to relax; a cable that takes longer is reported "
                   "as failed and the others go on (0 = no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(TimeoutSeconds());
   cmd->add_option("--unit", args->unit, "length unit of mesh files (m, cm, mm, um, in, ft)")
       ->check(CLI::IsMember({"m", "cm", "mm", "um", "in", "inch", "ft"}))
       ->capture_default_str();

@@ -8,6 +8,7 @@
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/app/solution_json.h"
+#include "output_folder.h"
 #include "terminal_text.h"
 
 namespace cablefit::addin {
@@ -23,6 +24,12 @@ struct SimulateArgs {
 
 int RunSimulate(const SimulateArgs& a) {
   const RecordingCase rc = ReadRecordingCase(a.case_path);
+  std::vector<std::string> inputs = {a.case_path, rc.case_file};
+  for (const RecordingRef& r : rc.recordings) inputs.push_back(r.path);
+  if (!a.initial.empty()) inputs.push_back(a.initial);
+  const OutputFolder output(a.out_dir, inputs);
+  output.CheckFile(output.path() / "centerline.csv");
+  output.CheckFile(output.path() / "solution.json");
   Polyline initial;
   if (!a.initial.empty()) {
     initial = ReadCenterlineCsv(a.initial);
@@ -39,7 +46,7 @@ int RunSimulate(const SimulateArgs& a) {
   } catch (const InvalidInput& e) {
     throw FileError(rc.case_file, e.what());
   }
-  const std::filesystem::path dir(a.out_dir);
+  const std::filesystem::path& dir = output.path();
   const Polyline out = SampleCenterline(r.solution.centerline,
                                         UniformArcLengths(rc.nominal.length, a.samples));
   WriteCenterlineCsv((dir / "centerline.csv").string(), out);

@@ -227,6 +227,7 @@ CaseFileList FindCaseFiles(const std::vector<std::string>& paths) {
       }
     }
     list.files.push_back(file);
+    list.names.push_back(name);
   }
   return list;
 }

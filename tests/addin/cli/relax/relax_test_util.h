@@ -9,14 +9,6 @@
 
 namespace cablefit::testing {
 
-/// Shell-quoted path. Built with append: GCC 12 warns (-Wrestrict, a false positive) on
-/// "'" + std::string.
-inline std::string Q(const std::filesystem::path& p) {
-  std::string q(1, '\'');
-  q.append(p.string()).push_back('\'');
-  return q;
-}
-
 /// The cable object named `name` of a `cablefit-relax/1` file.
 inline const json::Json& CableNamed(const json::Json& file, const std::string& name) {
   for (const json::Json& c : file.at("cables"))

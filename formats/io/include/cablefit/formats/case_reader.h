@@ -21,6 +21,7 @@ RecordingCase ReadRecordingCase(const std::string& path);
 /// Case files found under some command-line paths.
 struct CaseFileList {
   std::vector<std::string> files;  ///< sorted, each a case.json path, one per case name
+  std::vector<std::string> names;  ///< per file: its case `name`, "" when it cannot be read
   std::vector<FileError> errors;   ///< one per case whose name repeats an earlier one (skipped)
 };
 
