@@ -173,6 +173,26 @@ csv_entry('csv-binary-garbage', bytes(range(256)) * 4, 'line')
 case_entry('csv-huge', case(), 'more than the limit', names='centerline.csv', files={})
 rows[-1] = rows[-1][:1] + ('sparse:case/csv-huge/centerline.csv:3000000000',) + rows[-1][2:]
 
+case_entry('case-recording-absolute',
+           case(recordings=[{'kind': 'centerline', 'file': '/etc/passwd'}]), 'is absolute')
+case_entry('case-recording-leaves-folder',
+           case(recordings=[{'kind': 'centerline', 'file': '../case-recording-absolute/case.json'}]),
+           'leaves the case folder')
+case_entry('case-duplicate-key', good.replace('"name": "bad"', '"name": "bad", "name": "worse"'),
+           'appears twice')
+case_entry('case-scan-and-force',
+           case(recordings=[{'kind': 'centerline', 'file': 'centerline.csv'},
+                            {'kind': 'force_curve', 'file': 'bending.csv',
+                             'test': {'type': 'pinned_bending', 'prebend': 0.0,
+                                      'max_displacement': 0.05}}]),
+           'two cases', files={'centerline.csv': CENTERLINE,
+                               'bending.csv': 'step,displacement,force\n0,0,0\n1,0.001,0.1\n'})
+case_entry('case-torsion-with-bending-columns',
+           case(recordings=[{'kind': 'force_curve', 'file': 'torsion.csv',
+                             'test': {'type': 'clamped_torsion', 'max_angle': 0.2}}]),
+           'clamped_torsion', names='torsion.csv',
+           files={'torsion.csv': 'step,displacement,force\n0,0,0\n1,0.001,0.1\n2,0.002,0.2\n'})
+
 # ---------------------------------------------------------------- force-curve CSV ---------
 FORCE_REC = [{'kind': 'force_curve', 'file': 'bending.csv',
               'test': {'type': 'pinned_bending', 'prebend': 0.0, 'max_displacement': 0.05}}]
@@ -280,6 +300,8 @@ harness_entry('harness-section-missing',
               {'cables': {'a': {'material': {'section': 'missing.json'}}}}, 'no such file',
               names='harness/harness-section-missing/missing.json')
 harness_entry('harness-not-object', '"just a string"', 'object')
+harness_entry('harness-duplicate-key', '{"gravity": [0, 0, -9.81], "gravity": [0, 0, 9.81]}',
+              'appears twice')
 
 # ---------------------------------------------------------------- CAD and meshes (relax) ---
 def cad_entry(id_, name, data, message, exit_code=2):

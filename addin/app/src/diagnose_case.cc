@@ -145,6 +145,19 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   out->shape = std::move(d);
 }
 
+// A torsion curve read as a bending curve would be fitted with metres taken for radians and
+// newtons for newton-metres, and still give a confident answer.
+void RequireColumnsOfTest(const RecordingRef& r, const ForceCurve& curve) {
+  const bool torsion = r.test.type == ForceTestType::kClampedTorsion;
+  const char* x = torsion ? "angle" : "displacement";
+  const char* y = torsion ? "moment" : "force";
+  if (curve.x_name != x || curve.y_name != y) {
+    throw FileError(r.path, "has columns " + curve.x_name + "," + curve.y_name + " but its test is " +
+                                (torsion ? "clamped_torsion" : "pinned_bending") + ", which records step," +
+                                x + "," + y);
+  }
+}
+
 ForceCurve WithY(const ForceCurve& recorded, const Eigen::VectorXd& y) {
   ForceCurve c = recorded;
   c.y = y;
@@ -163,6 +176,7 @@ void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     const RecordingRef& r = *refs[i];
     Report(progress, 0.05 + 0.85 * static_cast<double>(i) / refs.size(), "fitting " + r.file);
     recorded.push_back(ReadForceCurveCsv(r.path));
+    RequireColumnsOfTest(r, recorded.back());
     each.push_back(Blame(r.path, [&] {
       try {
         return DiagnoseForceCurve(rc.nominal, r.test, recorded.back(), options.force, r.file);
@@ -213,10 +227,14 @@ DiagnosedCase DiagnoseCase(const std::string& case_file, const DiagnoseCaseOptio
     has_force = has_force || r.kind == RecordingKind::kForceCurve;
   }
   if (!has_shape && !has_force) throw FileError(out.recording.case_file, "has no recordings");
-  // One diagnosis.json holds one effect: a shape recording decides when both kinds are present.
+  // One diagnosis.json holds one effect, and a shape and a force test are two experiments: using
+  // one and ignoring the other would hide half of what was recorded.
+  if (has_shape && has_force) {
+    throw FileError(out.recording.case_file,
+                    "has both a shape recording (scan or centerline) and force curves; diagnose "
+                    "them as two cases");
+  }
   out.kind = has_shape ? CaseKind::kShape : CaseKind::kForce;
-  if (has_shape && has_force)
-    out.notes.push_back("force curves were not used: the case also has a shape recording");
   if (out.kind == CaseKind::kShape)
     DiagnoseShapeCase(options, progress, &out);
   else

@@ -1,6 +1,7 @@
 #include "cablefit/app/diagnose_output.h"
 
 #include <filesystem>
+#include <map>
 
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/centerline_csv.h"
@@ -64,8 +65,16 @@ std::vector<ModelCurveFile> ModelCurveFiles(const DiagnosedCase& d) {
     files.push_back({"fitted.csv", "fitted", rec});
     return files;
   }
+  // Two recordings a/bending.csv and b/bending.csv must not share one output pair: a leaf name
+  // that repeats is replaced by the whole relative path with its separators as '-'.
+  std::map<std::string, int> leaf_count;
+  for (const DiagnosedCurve& c : d.curves) ++leaf_count[std::filesystem::path(c.file).filename().string()];
   for (const DiagnosedCurve& c : d.curves) {
-    const std::string leaf = std::filesystem::path(c.file).filename().string();
+    std::string leaf = std::filesystem::path(c.file).filename().string();
+    if (leaf_count[leaf] > 1) {
+      leaf = std::filesystem::path(c.file).lexically_normal().generic_string();
+      for (char& ch : leaf) ch = ch == '/' ? '-' : ch;
+    }
     files.push_back({"nominal-" + leaf, "nominal", c.file});
     files.push_back({"fitted-" + leaf, "fitted", c.file});
   }

@@ -121,8 +121,16 @@ RecordingRef ReadRecording(const FieldReader& recording, const fs::path& case_di
   }
   ref.file = recording.RequireString("file");
   if (ref.file.empty()) recording.Fail("file", "is empty");
-  const fs::path file(ref.file);
-  ref.path = (file.is_absolute() ? file : case_dir / file).lexically_normal().string();
+  // The format says recording paths are relative to the case: a case file must not make the tool
+  // open (and copy into reports) a file outside its own folder, such as /etc/passwd.
+  const fs::path file = fs::path(ref.file).lexically_normal();
+  if (file.is_absolute() || file.has_root_name() || file.has_root_directory()) {
+    recording.Fail("file", "'" + ref.file + "' is absolute; recording paths are relative to the case folder");
+  }
+  if (!file.empty() && *file.begin() == "..") {
+    recording.Fail("file", "'" + ref.file + "' leaves the case folder; recordings must be inside it");
+  }
+  ref.path = (case_dir / file).lexically_normal().string();
   std::error_code ec;
   if (!fs::is_regular_file(ref.path, ec))
     recording.FailHere("recorded file '" + ref.file + "' not found (looked for " + ref.path + ")");

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/atomic_file.h"
@@ -14,8 +16,26 @@ namespace cablefit::json {
 
 Json ReadJsonFile(const std::string& path) {
   const std::string text = ReadInputFile(path, kMaxTextInputBytes, "a JSON file");
+  // JSON leaves repeated keys undefined and the parser would keep the last one silently: a case
+  // or harness file with two "length" entries must be refused, not read one way by us and another
+  // way by the tool that wrote it.
+  std::vector<std::set<std::string>> keys_of_open_objects;
+  const auto refuse_repeated_keys = [&](int /*depth*/, Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start: keys_of_open_objects.emplace_back(); break;
+      case Json::parse_event_t::object_end: keys_of_open_objects.pop_back(); break;
+      case Json::parse_event_t::key:
+        if (!keys_of_open_objects.back().insert(parsed.get<std::string>()).second) {
+          throw FileError(path, "key \"" + parsed.get<std::string>() +
+                                    "\" appears twice in one object; remove one of them");
+        }
+        break;
+      default: break;
+    }
+    return true;
+  };
   try {
-    return Json::parse(text);
+    return Json::parse(text, refuse_repeated_keys);
   } catch (const nlohmann::json::exception& e) {
     // parse_error, and out_of_range for literals such as 1e999 that overflow a double.
     std::string message = e.what();
