@@ -106,9 +106,10 @@ Polyline AsDrawnForWriting(const Polyline& drawn, double diameter, double per_di
 
 }  // namespace
 
-void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
-                          const HarnessConfig& config) {
-  std::string first_problem;
+std::vector<std::string> WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
+                                              const HarnessConfig& config) {
+  std::vector<std::string> best_skipped;
+  bool first_pass = true;
   for (const double per_diameter : {2.0, 0.5}) {
     std::vector<RelaxedCable> out;
     for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
@@ -123,16 +124,26 @@ void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
                                                       per_diameter);
       out.push_back(std::move(rc));
     }
-    try {
-      WriteRelaxedStep(path, f.drawing, out);
-      return;
-    } catch (const FileError&) {
-      throw;
-    } catch (const InvalidInput& e) {
-      if (first_problem.empty()) first_problem = e.what();
+    // The sparser resampling is a second try for the cables whose sweep failed; the file it
+    // writes replaces the first only when it holds more cables.
+    std::vector<std::string> skipped;
+    const std::string target = first_pass ? path : path + ".retry";  // not *.step: never an input
+    WriteRelaxedStep(target, f.drawing, out, &skipped);
+    std::error_code ec;
+    if (!first_pass && std::filesystem::exists(target, ec)) {
+      if (skipped.size() < best_skipped.size()) {
+        std::filesystem::rename(target, path, ec);
+        if (ec) throw FileError(path, "cannot replace: " + ec.message());
+      } else {
+        std::filesystem::remove(target, ec);
+      }
     }
+    if (first_pass || skipped.size() < best_skipped.size()) best_skipped = skipped;
+    first_pass = false;
+    if (best_skipped.empty()) break;
   }
-  throw FileError(path, first_problem);
+  for (std::string& problem : best_skipped) problem += " (left out of the STEP file)";
+  return best_skipped;
 }
 
 json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) {

@@ -256,7 +256,8 @@ int RunRelax(const RelaxArgs& a) {
       t0 = Clock::now();
       {
         std::lock_guard lock(cad_mutex);
-        WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config);
+        for (const std::string& problem : WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config))
+          fail(f, problem);
       }
       f.times.step = Since(t0);
       if (a.pictures) {

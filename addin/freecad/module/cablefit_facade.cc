@@ -155,10 +155,23 @@ std::vector<std::string> HarnessRelaxation::solid_names() const {
 
 double HarnessRelaxation::read_seconds() const { return file_->file.times.read; }
 
+namespace {
+
+// The file is written with every cable that could be swept; the caller still learns about the
+// others, as the command line reports them.
+void ThrowIfCablesLeftOut(const std::string& path, const std::vector<std::string>& left_out) {
+  if (left_out.empty()) return;
+  std::string problem = left_out.front();
+  if (left_out.size() > 1) problem += " and " + std::to_string(left_out.size() - 1) + " more";
+  throw FileError(path, problem);
+}
+
+}  // namespace
+
 void HarnessRelaxation::WriteStep(const std::string& path, bool with_solids, int cable) const {
   const addin::RelaxedFile& f = file_->file;
   if (with_solids && cable < 0) {
-    addin::WriteRelaxedStepFile(path, f, file_->config);
+    ThrowIfCablesLeftOut(path, addin::WriteRelaxedStepFile(path, f, file_->config));
     return;
   }
   addin::RelaxedFile part = f;  // the solids' shapes are shared, not copied
@@ -174,7 +187,7 @@ void HarnessRelaxation::WriteStep(const std::string& path, bool with_solids, int
     part.cables = {f.cables[k]};
     part.cable_errors = {f.cable_errors[k]};
   }
-  addin::WriteRelaxedStepFile(path, part, file_->config);
+  ThrowIfCablesLeftOut(path, addin::WriteRelaxedStepFile(path, part, file_->config));
 }
 
 std::string HarnessRelaxation::WriteReport(const std::string& dir, bool pictures) const {
@@ -188,7 +201,8 @@ std::string HarnessRelaxation::WriteReport(const std::string& dir, bool pictures
   json::WriteJsonFile((out / (f.stem + ".json")).string(), addin::RelaxedFileToJson(f, config));
   f.times.json = Since(t0);
   t0 = Clock::now();
-  addin::WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config);
+  const std::vector<std::string> left_out =
+      addin::WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config);
   f.times.step = Since(t0);
   if (pictures) {
     t0 = Clock::now();
@@ -198,6 +212,7 @@ std::string HarnessRelaxation::WriteReport(const std::string& dir, bool pictures
   }
   const std::string report = (out / "report.html").string();
   addin::WriteRelaxReport(report, {f}, config, f.times.read + f.times.relax);
+  ThrowIfCablesLeftOut((out / (f.stem + ".step")).string(), left_out);
   return report;
 }
 

@@ -1,5 +1,7 @@
 // WriteRelaxedStep: relaxed centrelines as swept tubes, input solids copied, STEP AP242.
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
@@ -65,8 +67,9 @@ Eigen::Matrix3Xd FillLongGaps(const Eigen::Matrix3Xd& points) {  // 3 x n [m]
 }  // namespace
 
 void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
-                      const std::vector<RelaxedCable>& cables) {
+                      const std::vector<RelaxedCable>& cables, std::vector<std::string>* skipped) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
+  int shapes = 0;
   for (const RelaxedCable& relaxed : cables) {
     if (relaxed.source_cable < 0 || relaxed.source_cable >= static_cast<int>(input.cables.size())) {
       throw InvalidInput("relaxed cable refers to input cable " +
@@ -85,27 +88,55 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       // A thousandth of the diameter: well below the spline tolerance below.
       const Eigen::Matrix3Xd distinct =
           DropNearDuplicates(relaxed.centreline.points, 1e-3 * diameter);  // 3 x m [m]
-      if ((distinct.col(distinct.cols() - 1) - distinct.col(0)).norm() <= 1e-3 * diameter) {
+      // Arc length, not end-to-end distance: a closed loop ends where it starts.
+      double length = 0.0;  // [m]
+      for (Eigen::Index k = 1; k < distinct.cols(); ++k) length += (distinct.col(k) - distinct.col(k - 1)).norm();
+      if (distinct.cols() < 2 || length <= 1e-3 * diameter) {
         throw InvalidInput("the relaxed centreline has no length");
       }
       const Eigen::Matrix3Xd points = FillLongGaps(distinct) / kMetresPerOcctUnit;  // 3 x m [mm]
       // Approximation tolerance well below the 1 %-of-diameter accuracy promised for read-back.
       const double tolerance = std::min(0.01, 1e-3 * diameter / kMetresPerOcctUnit);  // [mm]
-      const TopoDS_Wire spine =
-          BRepBuilderAPI_MakeWire(MakeSplineEdge(points, tolerance)).Wire();
-      const TopoDS_Shape tube = MakeTubeSolidInChild(spine, diameter / kMetresPerOcctUnit);
+      const auto sweep = [&](const Eigen::Matrix3Xd& along) {
+        const TopoDS_Wire spine = BRepBuilderAPI_MakeWire(MakeSplineEdge(along, tolerance)).Wire();
+        return MakeTubeSolidInChild(spine, diameter / kMetresPerOcctUnit);
+      };
+      TopoDS_Shape tube;
+      const Eigen::Index m = points.cols();
+      if (m >= 4 && (points.col(m - 1) - points.col(0)).norm() < diameter / kMetresPerOcctUnit) {
+        // A closed loop: a spline through coinciding ends cannot be swept, two halves can.
+        TopoDS_Compound halves;
+        BRep_Builder builder;
+        builder.MakeCompound(halves);
+        builder.Add(halves, sweep(points.leftCols(m / 2 + 1)));
+        builder.Add(halves, sweep(points.rightCols(m - m / 2)));
+        tube = halves;
+      } else {
+        tube = sweep(points);
+      }
       AddNamedShape(doc, tube, drawn.name,
                     drawn.has_color ? std::optional<SrgbColor>(drawn.color) : std::nullopt);
+      ++shapes;
     } catch (const InvalidInput& e) {
-      throw InvalidInput("cable '" + drawn.name + "': " + e.what());
+      const std::string problem = "cable '" + drawn.name + "': " + e.what();
+      if (skipped == nullptr) throw InvalidInput(problem);
+      skipped->push_back(problem);
     } catch (const Standard_Failure& e) {
-      throw InvalidInput("cable '" + drawn.name + "': " + e.GetMessageString());
+      const std::string problem = "cable '" + drawn.name + "': " + e.GetMessageString();
+      if (skipped == nullptr) throw InvalidInput(problem);
+      skipped->push_back(problem);
     }
   }
   for (const DrawnSolid& solid : input.solids) {
     if (!solid.shape) continue;  // not from CAD (e.g. a mesh input): nothing to copy
     AddNamedShape(doc, solid.shape->shape, solid.name,
                   solid.has_color ? std::optional<SrgbColor>(solid.color) : std::nullopt);
+    ++shapes;
+  }
+  if (shapes == 0) {
+    // OCCT refuses an empty model with a message that blames the folder; say what happened.
+    if (skipped != nullptr && !skipped->empty()) return;
+    throw InvalidInput("nothing to write: no cable and no solid");
   }
   WriteStepAtomically(doc, path, "AP242DIS");
 }

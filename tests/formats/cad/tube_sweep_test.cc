@@ -157,5 +157,57 @@ TEST(TubeSweep, CentrelineWithoutLengthIsAOneLineError) {
                     "cable 'swept': the relaxed centreline has no length");
 }
 
+TEST(TubeSweep, ACableThatCannotBeSweptLeavesItsNeighboursInTheFile) {
+  const double d = 0.01;  // [m]
+  Polyline good;
+  good.points.resize(3, 30);
+  for (int i = 0; i < 30; ++i) good.points.col(i) << 0.01 * i, 0.02 * std::sin(0.2 * i), 0.0;
+  good.ParameteriseByChords();
+  Polyline point;
+  point.points.resize(3, 4);
+  point.points.colwise() = Eigen::Vector3d(0.1, 0.2, 0.3);
+  point.ParameteriseByChords();
+  HarnessDrawing drawing = OneCable(good, d);
+  drawing.cables.push_back(drawing.cables[0]);
+  drawing.cables[1].name = "collapsed";
+  const std::string path = (testing::FreshTempDir("sweep_skip") / "two.step").string();
+  EXPECT_THROW(WriteRelaxedStep(path, drawing, {RelaxedCable{0, good, d}, RelaxedCable{1, point, d}}),
+               InvalidInput);
+  std::vector<std::string> skipped;
+  WriteRelaxedStep(path, drawing, {RelaxedCable{0, good, d}, RelaxedCable{1, point, d}}, &skipped);
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_EQ(skipped[0], "cable 'collapsed': the relaxed centreline has no length");
+  const HarnessDrawing back = ReadCadFile(path);
+  ASSERT_EQ(back.cables.size(), 1u);
+  EXPECT_EQ(back.cables[0].name, "swept");
+}
+
+TEST(TubeSweep, AClosedLoopHasLengthAndIsWritten) {
+  // A ring ends where it starts; its end-to-end distance is zero but its length is not.
+  const double d = 0.006;  // [m]
+  Polyline ring;
+  const int n = 61;
+  ring.points.resize(3, n);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * i / (n - 1);
+    ring.points.col(i) << 0.1 * std::cos(t), 0.1 * std::sin(t), 0.02 * std::sin(2 * t);
+  }
+  ring.ParameteriseByChords();
+  const std::string path = (testing::FreshTempDir("sweep_ring") / "ring.step").string();
+  std::vector<std::string> skipped;
+  WriteRelaxedStep(path, OneCable(ring, d), {RelaxedCable{0, ring, d}}, &skipped);
+  ASSERT_TRUE(skipped.empty()) << skipped.front();
+  // Written as two halves (a spline through coinciding ends cannot be swept): together they are
+  // the ring.
+  const HarnessDrawing back = ReadCadFile(path);
+  ASSERT_GE(back.cables.size(), 1u);
+  double length = 0.0;  // [m]
+  for (const DrawnCable& c : back.cables) {
+    EXPECT_NEAR(c.diameter, d, 0.01 * d);
+    length += c.centreline.ChordLength();
+  }
+  EXPECT_NEAR(length, ring.ChordLength(), 0.02 * ring.ChordLength());
+}
+
 }  // namespace
 }  // namespace cablefit

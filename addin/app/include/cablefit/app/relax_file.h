@@ -51,9 +51,10 @@ double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& conf
 
 /// Writes DIR/<stem>.step: relaxed cables resampled to about two points per diameter (retried
 /// sparser if the sweep fails), failed ones as drawn so names and count are kept,
-/// and the drawing's solids.
-void WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
-                          const HarnessConfig& config);
+/// and the drawing's solids. Returns one line per cable that could not be made into a tube and
+/// was left out (the others are written all the same).
+std::vector<std::string> WriteRelaxedStepFile(const std::string& path, const RelaxedFile& f,
+                                              const HarnessConfig& config);
 
 /// The `cablefit-relax/1` object of DIR/<stem>.json.
 json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config);

@@ -38,9 +38,13 @@ HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& option
 
 /// Writes `cables` as tubes (a circle swept along a B-spline through each relaxed centreline)
 /// with the names and colours of their source cables, plus every solid of `input` unchanged, as
-/// a STEP AP242 file in millimetres. Written atomically (temp file + rename). Throws
-/// InvalidInput for a cable without a usable centreline or diameter, FileError on I/O failure.
+/// a STEP AP242 file in millimetres. Written atomically (temp file + rename). A cable without a
+/// usable centreline or diameter, or whose tube OCCT cannot sweep, throws InvalidInput; with
+/// `skipped` it is left out instead and its one-line problem appended there, so that one bad
+/// cable does not cost its neighbours their output (when every cable is left out and there is no
+/// solid, no file is written). FileError on I/O failure.
 void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
-                      const std::vector<RelaxedCable>& cables);
+                      const std::vector<RelaxedCable>& cables,
+                      std::vector<std::string>* skipped = nullptr);
 
 }  // namespace cablefit
