@@ -280,6 +280,13 @@ rows[-1] = rows[-1][:3] + ('section/section-library-missing/nowhere.json',) + ro
 section_entry('section-torsion-cells-huge',
               {'format': 'cablefit-section/1', 'materials': cu, 'components': [wire],
                'torsion': {'finest_cells': 1000000000, 'levels': 2}}, 'finest_cells must be <= 1024')
+section_entry('section-position-huge',
+              {'format': 'cablefit-section/1', 'materials': cu,
+               'components': [dict(wire, position=[0, 1e308])]}, 'from the section')
+section_entry('section-modulus-huge',
+              {'format': 'cablefit-section/1',
+               'materials': {'cu': {'E': 1e300, 'nu': 0.34, 'density': 8900}},
+               'components': [wire]}, 'at most')
 section_entry('section-truncated', '{"format": "cablefit-section/1", "components": [{"na',
               'not valid JSON')
 

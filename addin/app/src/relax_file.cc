@@ -153,6 +153,7 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   j["length_unit_of_input"] = f.drawing.length_unit;
   j["config"] = config.path.empty() ? json::Json() : json::Json(config.path);
   j["min_bend_radius_factor"] = config.min_bend_radius_factor;
+  j["not_cables"] = f.drawing.skipped;  // what the input drew that was not taken as a cable, and why
   if (!f.networks.empty()) {
     j["networks"] = f.networks;
     j["networks_meaning"] =

@@ -165,6 +165,8 @@ int RunRelax(const RelaxArgs& a) {
       if (IsCadPath(f.input)) lock.lock();
       f.drawing = ReadHarnessInput(f.input, unit);
       f.read_ok = true;
+      for (const std::string& why : f.drawing.skipped)
+        bar.PrintLine(stderr, "cablefit: note: " + f.input + ": not taken as a cable: " + why);
       f.cables.resize(f.drawing.cables.size());
       f.cable_errors.resize(f.drawing.cables.size());
     } catch (...) {

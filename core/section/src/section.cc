@@ -49,6 +49,12 @@ std::string PartLabel(const SectionPart& p, size_t index) {
 
 }  // namespace
 
+// Plausibility bounds, far outside any cable or hose but well inside double range: beyond them
+// the fourth powers in the stiffness integrals overflow and the result is NaN, not an error.
+constexpr double kMaxSectionExtent = 1.0;   // [m] from the origin of the section's coordinates
+constexpr double kMaxModulus = 1e13;        // [Pa] diamond is 1.2e12
+constexpr double kMaxDensity = 1e5;         // [kg/m^3] osmium is 2.26e4
+
 void ValidateSection(const SectionSpec& spec) {
   if (spec.parts.empty()) throw InvalidInput("section has no components");
   for (size_t i = 0; i < spec.parts.size(); ++i) {
@@ -58,19 +64,27 @@ void ValidateSection(const SectionSpec& spec) {
     if (!std::isfinite(p.outer_radius) || p.outer_radius <= 0.0) {
       throw InvalidInput(label + ": outer radius must be finite and > 0");
     }
+    if (p.centre.norm() + p.outer_radius > kMaxSectionExtent) {
+      throw InvalidInput(label + ": reaches " + MessageNumber(p.centre.norm() + p.outer_radius) +
+                         " m from the section's origin; a cable section lies within " +
+                         MessageNumber(kMaxSectionExtent) + " m (lengths are in metres)");
+    }
     if (!std::isfinite(p.inner_radius) || p.inner_radius < 0.0 ||
         p.inner_radius >= p.outer_radius) {
       throw InvalidInput(label + ": inner radius must be finite, >= 0 and < outer radius");
     }
     const SectionMaterial& m = p.material;
-    if (!std::isfinite(m.youngs_modulus) || m.youngs_modulus <= 0.0) {
-      throw InvalidInput(label + ": Young's modulus E must be finite and > 0");
+    if (!std::isfinite(m.youngs_modulus) || m.youngs_modulus <= 0.0 || m.youngs_modulus > kMaxModulus) {
+      throw InvalidInput(label + ": Young's modulus E must be > 0 and at most " +
+                         MessageNumber(kMaxModulus) + " Pa");
     }
-    if (!std::isfinite(m.shear_modulus) || m.shear_modulus <= 0.0) {
-      throw InvalidInput(label + ": shear modulus G must be finite and > 0");
+    if (!std::isfinite(m.shear_modulus) || m.shear_modulus <= 0.0 || m.shear_modulus > kMaxModulus) {
+      throw InvalidInput(label + ": shear modulus G must be > 0 and at most " +
+                         MessageNumber(kMaxModulus) + " Pa");
     }
-    if (!std::isfinite(m.density) || m.density < 0.0) {
-      throw InvalidInput(label + ": density must be finite and >= 0");
+    if (!std::isfinite(m.density) || m.density < 0.0 || m.density > kMaxDensity) {
+      throw InvalidInput(label + ": density must be >= 0 and at most " + MessageNumber(kMaxDensity) +
+                         " kg/m^3");
     }
   }
   // Round-off in hand-written or CAD coordinates must not turn touching wires into overlaps.

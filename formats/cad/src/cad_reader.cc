@@ -249,6 +249,17 @@ class DrawingBuilder {
       loose.push_back(ex.Current());
     }
     for (TopoDS_Shape& sewn : SewFaces(loose)) bodies.push_back(std::move(sewn));
+    if (routes.empty() && bodies.empty()) {
+      // Edges of zero length and lone points make no route; a product drawn only with them would
+      // otherwise vanish from the output without a word.
+      const bool has_points = TopExp_Explorer(shape, TopAbs_EDGE, TopAbs_FACE).More() ||
+                              TopExp_Explorer(shape, TopAbs_VERTEX, TopAbs_EDGE).More();
+      if (has_points) {
+        drawing_->skipped.push_back(
+            "'" + (style.name.empty() ? std::string("unnamed") : style.name) +
+            "': drawn as a point or a curve of zero length, not a cable");
+      }
+    }
     TubeRecoveryOptions tube_options;
     tube_options.sample_spacing = options_.sample_spacing / kMetresPerOcctUnit;
     tube_options.min_area_fraction = options_.min_tube_area_fraction;
