@@ -144,7 +144,7 @@ if os.path.lexists(link):
     os.remove(link)
 os.symlink('nowhere/case.json', link)
 entry('case-dangling-link', 'diagnose case/case-dangling-link/case.json --out {out}', 2,
-      'case/case-dangling-link/case.json', 'no such file')
+      'case/case-dangling-link/case.json', 'symbolic link that leads nowhere')
 entry('case-fifo', 'diagnose case/case-fifo/case.json --out {out}', 2,
       'case/case-fifo/case.json', 'not a regular file', setup='fifo:case/case-fifo/case.json')
 entry('case-huge-json', 'diagnose case/case-huge/case.json --out {out}', 2,

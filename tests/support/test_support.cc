@@ -1,6 +1,9 @@
 #include "test_support.h"
 
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -41,7 +44,13 @@ std::filesystem::path FreshTempDir(const std::string& tag) {
   if (info) name += std::string("-") + info->test_suite_name() + "-" + info->name();
   for (char& c : name)
     if (c == '/') c = '_';
-  auto dir = std::filesystem::temp_directory_path() / ("cablefit-test-" + name);
+  // The test binary's own path tells two checkouts apart: their suites may run at the same time
+  // (a CI check of a clean clone beside a developer's build) and must not share folders.
+  std::error_code ec;
+  const std::string exe = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+  char tree[17];
+  std::snprintf(tree, sizeof tree, "%08zx", std::hash<std::string>{}(exe) & 0xffffffffu);
+  auto dir = std::filesystem::temp_directory_path() / ("cablefit-test-" + std::string(tree) + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

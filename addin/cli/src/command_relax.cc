@@ -24,6 +24,7 @@
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
+#include "cablefit/formats/input_file.h"
 #include "terminal_text.h"
 
 namespace cablefit::addin {
@@ -67,7 +68,7 @@ std::vector<std::string> ExpandInputs(const std::vector<std::string>& inputs,
     } else if (fs::exists(p, ec)) {
       files.push_back(p);
     } else {
-      failures->push_back(p + ": no such file or folder");
+      failures->push_back(p + ": " + UnreachablePathProblem(p));
     }
   }
   return files;

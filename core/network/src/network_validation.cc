@@ -5,6 +5,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "cablefit/core/base/distinct_numbers.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/network/network_model.h"
 #include "network_parts.h"
@@ -80,10 +81,12 @@ void CheckReach(const NetworkSpec& spec) {
       const int p = fixed[a], q = fixed[k];
       if (points[p].branch == points[q].branch) continue;  // checked per branch
       const double gap = (position(p) - position(q)).norm();
-      if (dist[q] >= 0 && gap > dist[q] * (1 + 1e-9) + 1e-12 * total)
-        throw InvalidInput(points[p].label + " and " + points[q].label + " are " + Num(gap) +
-                           " m apart but only " + Num(dist[q]) +
+      if (dist[q] >= 0 && gap > dist[q] * (1 + 1e-9) + 1e-12 * total) {
+        const auto [gap_text, dist_text] = DistinctNumbers(gap, dist[q]);
+        throw InvalidInput(points[p].label + " and " + points[q].label + " are " + gap_text +
+                           " m apart but only " + dist_text +
                            " m of cable joins them: a branch between them is too short");
+      }
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cablefit/core/base/distinct_numbers.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/rod/internal/natural_curvature.h"
 #include "cablefit/core/rod/internal/rod_topology.h"
@@ -135,10 +136,12 @@ void ValidateRodSpec(const RodSpec& spec, bool require_support) {
       const double dist = (sp.position - prev.position).norm();
       const double arc = sp.s - prev.s;
       const bool slides = sp.sliding || prev.sliding;
-      if (!slides && dist > arc * (1 + 1e-9))
+      if (!slides && dist > arc * (1 + 1e-9)) {
+        const auto [dist_text, arc_text] = DistinctNumbers(dist, arc);
         throw InvalidInput("supports " + std::to_string(i - 1) + " and " + std::to_string(i) +
-                           " are " + Num(dist) + " m apart but only " + Num(arc) +
+                           " are " + dist_text + " m apart but only " + arc_text +
                            " m of cable lies between them");
+      }
     }
   }
   for (const NaturalCurvatureSpec& nc : spec.natural_curvature) {

@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include "cablefit/core/base/distinct_numbers.h"
+#include "cablefit/formats/input_file.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/formats/number_text.h"
 
@@ -16,12 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using json::FieldReader;
 using json::Json;
-
-std::string Metres(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.3g m", x);
-  return buf;
-}
 
 SupportSpec ReadClamp(const FieldReader& clamp) {
   SupportSpec support;
@@ -71,11 +67,12 @@ void CheckClampLayout(const RodSpec& rod, const FieldReader& root) {
     const double arc = s - prev_s;
     const double chord = (supports[i].position - supports[i - 1].position).norm();
     // Inextensible cable: the straight distance can never exceed the arc length between.
-    if (chord > arc * (1.0 + 1e-6) + tol)
+    if (chord > arc * (1.0 + 1e-6) + tol) {
+      const auto [chord_text, arc_text] = DistinctNumbers(chord, arc);
       throw FileError(root.file(), "clamps " + std::to_string(i - 1) + " and " +
-                                       std::to_string(i) + " are " + Metres(chord) +
-                                       " apart but only " + Metres(arc) +
-                                       " of cable between them");
+                                       std::to_string(i) + " are " + chord_text +
+                                       " m apart but only " + arc_text + " m of cable between them");
+    }
   }
 }
 
@@ -194,7 +191,7 @@ CaseFileList FindCaseFiles(const std::vector<std::string>& paths) {
   std::set<std::string> found;  // canonical paths, so "dir" and "dir/case.json" count once
   for (const std::string& p : paths) {
     std::error_code ec;
-    if (!fs::exists(p, ec)) throw FileError(p, "no such file or folder");
+    if (!fs::exists(p, ec)) throw FileError(p, UnreachablePathProblem(p));
     if (!fs::is_directory(p, ec)) {
       found.insert(fs::weakly_canonical(p, ec).string());
       continue;

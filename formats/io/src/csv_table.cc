@@ -32,7 +32,13 @@ std::vector<std::string> Split(const std::string& line) {
 }  // namespace
 
 Table ReadTable(const std::string& path) {
-  std::istringstream in(ReadInputFile(path, kMaxTextInputBytes, "a CSV file"));
+  std::string text = ReadInputFile(path, kMaxTextInputBytes, "a CSV file");
+  // Line ends of any convention: CR LF (Windows) is trimmed per cell; a lone CR (classic Mac OS,
+  // some bench loggers) ends a line too, or the whole file would read as one header line.
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+  }
+  std::istringstream in(text);
   Table table;
   std::string line;
   int line_no = 0;

@@ -9,11 +9,25 @@
 
 namespace cablefit {
 
+std::string UnreachablePathProblem(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code link_ec, ec;
+  const bool link_exists = fs::exists(fs::symlink_status(path, link_ec));
+  const fs::file_status target = fs::status(path, ec);
+  if (fs::exists(target)) return "exists but could not be used";
+  if (link_exists && fs::is_symlink(fs::symlink_status(path, link_ec))) {
+    return ec ? "is a symbolic link that leads nowhere (" + ec.message() + ")"
+              : "is a symbolic link to a missing file";
+  }
+  if (ec && ec != std::errc::no_such_file_or_directory) return "cannot be reached (" + ec.message() + ")";
+  return "no such file or folder";
+}
+
 std::uint64_t CheckInputFile(const std::string& path, std::uint64_t max_bytes, const char* kind) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) throw FileError(path, "no such file");
+  if (!fs::exists(status)) throw FileError(path, UnreachablePathProblem(path));
   if (fs::is_directory(status)) throw FileError(path, "is a directory, expected a file");
   // A FIFO or device would block or never end: only plain files are read.
   if (!fs::is_regular_file(status)) throw FileError(path, "is not a regular file");

@@ -45,6 +45,14 @@ TEST(CenterlineCsv, GivenSIsKept) {
   EXPECT_EQ(line.points.col(2), Eigen::Vector3d(1, 1, 0));
 }
 
+TEST(CenterlineCsv, CarriageReturnAloneEndsALine) {
+  const auto dir = FreshTempDir("io");
+  WriteText(dir / "mac.csv", "s,x,y,z\r0,0,0,0\r0.5,1,0,0\r2,1,1,0\r");
+  const Polyline line = ReadCenterlineCsv((dir / "mac.csv").string());
+  ASSERT_EQ(line.size(), 3);
+  EXPECT_EQ(line.s, Eigen::Vector3d(0, 0.5, 2));
+}
+
 TEST(CenterlineCsv, EmptySOrNoSColumnGivesChordLengths) {
   const auto dir = FreshTempDir("io");
   WriteText(dir / "a.csv", "s,x,y,z\n,0,0,0\n,3,4,0\n,3,4,12\n");

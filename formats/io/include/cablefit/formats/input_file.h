@@ -15,6 +15,11 @@ namespace cablefit {
 inline constexpr std::uint64_t kMaxTextInputBytes = std::uint64_t{16} << 20;
 inline constexpr std::uint64_t kMaxPlyInputBytes = std::uint64_t{2} << 30;
 
+/// Why `path` cannot be used although it was named: "no such file or folder", or the system's
+/// reason when something is there but cannot be reached (a loop of symbolic links, a dangling
+/// link, a folder without permission), so that the user does not look for a typo.
+std::string UnreachablePathProblem(const std::string& path);
+
 /// Throws FileError(path, ...) unless `path` is a regular file of at most `max_bytes` bytes:
 /// "no such file", "is a directory, expected a file", "is not a regular file", "is N bytes,
 /// more than the limit of M bytes for <kind>". Returns the size.
