@@ -60,7 +60,8 @@ TEST(ShapeEffectsTest, EveryModelIsComplete) {
 
 TEST(ShapeEffectsTest, NoneChangesNothingAndSaysNothing) {
   const RodSpec nominal = TwoClamps();
-  const EffectModel& m = ModelOf(BuildEffectModels(nominal, {}), ShapeEffect::kNone);
+  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const EffectModel& m = ModelOf(models, ShapeEffect::kNone);
   const EffectDescription d = m.describe(Eigen::VectorXd(0), {{0.2, 0.4}, nullptr});
   EXPECT_TRUE(d.parameters.empty());
   EXPECT_FALSE(d.interval.has_value());
@@ -69,7 +70,8 @@ TEST(ShapeEffectsTest, NoneChangesNothingAndSaysNothing) {
 
 TEST(ShapeEffectsTest, CurvatureIsDescribedWhereItIsApplied) {
   const RodSpec nominal = TwoClamps();
-  const EffectModel& m = ModelOf(BuildEffectModels(nominal, {}), ShapeEffect::kIntrinsicCurvature);
+  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const EffectModel& m = ModelOf(models, ShapeEffect::kIntrinsicCurvature);
   // A span sticking out of the far end, and one narrower than the narrowest allowed.
   for (const Eigen::VectorXd& x : {X({0.95, 0.3, 3.0, 4.0}), X({0.5, 0.001, -2.0, 0.0})}) {
     const RodSpec changed = m.apply(x);
@@ -89,7 +91,8 @@ TEST(ShapeEffectsTest, CurvatureIsDescribedWhereItIsApplied) {
 
 TEST(ShapeEffectsTest, ContactIsDescribedWhereItPushes) {
   const RodSpec nominal = TwoClamps();
-  const EffectModel& m = ModelOf(BuildEffectModels(nominal, {}), ShapeEffect::kSupportContact);
+  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const EffectModel& m = ModelOf(models, ShapeEffect::kSupportContact);
   // On a clamp, or beyond the cable, a contact is held off the ends.
   for (double s : {-0.3, 0.0, 0.4, 1.0, 1.7}) {
     const Eigen::VectorXd x = X({s, 0.0, 0.003, -0.004});
