@@ -83,6 +83,75 @@ EffectCandidate Candidate(const EffectModel& model, const Fit& fit,
   return c;
 }
 
+// The selection over the fits, asked again when a fit is set aside.
+class Selection {
+ public:
+  Selection(const std::vector<EffectModel>& models, const std::vector<Fit>& fits, int points,
+            double noise_sigma, double min_bic_gain)
+      : input_(SelectionInput(models, fits)),
+        residuals_(2 * points),  // a point's offset from the curve has two free components
+        noise_sigma_(noise_sigma),
+        min_bic_gain_(min_bic_gain) {
+    const internal::ModelRanking first = Rank({});
+    if (first.ranked.empty()) throw InvalidInput("no model could be fitted to the recording");
+    const auto none = std::find_if(first.ranked.begin(), first.ranked.end(), [&](auto& r) {
+      return models[r.fit].effect == ShapeEffect::kNone;
+    });
+    if (none == first.ranked.end()) throw InvalidInput("the nominal set-up could not be re-solved");
+    none_index_ = none->fit;
+  }
+  internal::ModelRanking Rank(const std::vector<bool>& rejected) const {
+    return internal::RankModels(input_, residuals_, noise_sigma_, min_bic_gain_, rejected);
+  }
+  size_t Best(const std::vector<bool>& rejected) const { return Rank(rejected).ranked.front().fit; }
+  size_t none_index() const { return none_index_; }
+
+ private:
+  std::vector<internal::ModelFit> input_;
+  int residuals_;
+  double noise_sigma_, min_bic_gain_;
+  size_t none_index_ = 0;
+};
+
+// The result in the catalogue's terms: deviations from nominal and chosen model on every seen
+// point, every candidate described by its model (the chosen one from its accurate solve).
+void DescribeResult(const PreparedRecording& rec, const FitContext& ctx,
+                    const std::vector<EffectModel>& models, const std::vector<Fit>& fits,
+                    const internal::ModelRanking& ranking, const FinalSolves& final_solves,
+                    ShapeDiagnosis* out) {
+  const size_t chosen = final_solves.chosen;
+  out->fitted_spec = final_solves.fitted_spec;
+  out->nominal_solution = final_solves.nominal;
+  out->fitted_solution = final_solves.fitted;
+  const CurveDeviation baseline = MeasureDeviation(rec, ctx, out->nominal_solution.centerline);
+  const CurveDeviation fitted = MeasureDeviation(rec, ctx, out->fitted_solution.centerline);
+  out->observation_s = baseline.s;
+  out->baseline_deviation = baseline.distance;
+  out->fitted_deviation = fitted.distance;
+  out->baseline_max = baseline.max;
+  out->baseline_rms = baseline.rms;
+  out->fitted_max = fitted.max;
+  out->fitted_rms = fitted.rms;
+
+  EffectDescriptionContext context;
+  context.mismatch = MismatchInterval(out->observation_s, out->baseline_deviation);
+  for (const internal::RankedModel& r : ranking.ranked) {
+    context.solution = r.fit == chosen ? &out->fitted_solution : &fits[r.fit].solution;
+    out->candidates.push_back(Candidate(models[r.fit], fits[r.fit], r, context));
+  }
+  const EffectModel& cm = models[chosen];
+  out->effect = cm.effect;
+  out->clamp = cm.clamp;
+  for (const EffectCandidate& c : out->candidates)
+    if (c.effect == out->effect) out->confidence = c.score;
+  context.solution = &out->fitted_solution;
+  EffectDescription d = cm.describe(fits[chosen].x, context);
+  out->parameters = std::move(d.parameters);
+  out->vectors = std::move(d.vectors);
+  out->units = std::move(d.units);
+  out->interval = d.interval;
+}
+
 }  // namespace
 
 bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
@@ -124,28 +193,13 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     progress(0.05 + 0.85 * (i + 1) / models.size(), ToString(models[i].effect));
   }
 
-  const std::vector<internal::ModelFit> selection_input = SelectionInput(models, fits);
-  const int residuals = 2 * n;  // a point's offset from the curve has two free components
-  auto rank = [&](const std::vector<bool>& rejected) {
-    return internal::RankModels(selection_input, residuals, noise_sigma, options.min_bic_gain,
-                                rejected);
-  };
-  const internal::ModelRanking first = rank({});
-  if (first.ranked.empty()) throw InvalidInput("no model could be fitted to the recording");
-  const auto none_it = std::find_if(first.ranked.begin(), first.ranked.end(), [&](auto& r) {
-    return models[r.fit].effect == ShapeEffect::kNone;
-  });
-  if (none_it == first.ranked.end())
-    throw InvalidInput("the nominal set-up could not be re-solved");
-  const size_t none_index = none_it->fit;
-
+  const Selection selection(models, fits, n, noise_sigma, options.min_bic_gain);
   const FinalSolves final_solves =
-      SolveFinal(nominal, rec, ctx, models, fits, none_index,
-                 [&](const std::vector<bool>& rejected) { return rank(rejected).ranked.front().fit; });
+      SolveFinal(nominal, rec, ctx, models, fits, selection.none_index(),
+                 [&](const std::vector<bool>& rejected) { return selection.Best(rejected); });
   const size_t chosen = final_solves.chosen;
-  const internal::ModelRanking ranking = rank(final_solves.rejected);
-  out.adequacy = Assess(models, fits, final_solves.rejected, none_index, n, noise_sigma,
-                        options.noise_allowance);
+  out.adequacy = Assess(models, fits, final_solves.rejected, selection.none_index(), n,
+                        noise_sigma, options.noise_allowance);
   out.explained = out.adequacy.chi_square <= out.adequacy.limit;
   out.notes.insert(out.notes.end(), final_solves.notes.begin(), final_solves.notes.end());
   if (fits[chosen].branch > 0)
@@ -154,37 +208,8 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
                         "from " + branches.names[static_cast<size_t>(fits[chosen].branch)] +
                         ") than the one the recorded shape leads to");
 
-  out.fitted_spec = final_solves.fitted_spec;
-  out.nominal_solution = final_solves.nominal;
-  out.fitted_solution = final_solves.fitted;
-  const CurveDeviation baseline = MeasureDeviation(rec, ctx, out.nominal_solution.centerline);
-  const CurveDeviation fitted = MeasureDeviation(rec, ctx, out.fitted_solution.centerline);
-  out.observation_s = baseline.s;
-  out.baseline_deviation = baseline.distance;
-  out.fitted_deviation = fitted.distance;
-  out.baseline_max = baseline.max;
-  out.baseline_rms = baseline.rms;
-  out.fitted_max = fitted.max;
-  out.fitted_rms = fitted.rms;
-
-  // Every candidate in the catalogue's terms; the chosen one with its accurate solve.
-  EffectDescriptionContext context;
-  context.mismatch = MismatchInterval(out.observation_s, out.baseline_deviation);
-  for (const internal::RankedModel& r : ranking.ranked) {
-    context.solution = r.fit == chosen ? &out.fitted_solution : &fits[r.fit].solution;
-    out.candidates.push_back(Candidate(models[r.fit], fits[r.fit], r, context));
-  }
-  const EffectModel& cm = models[chosen];
-  out.effect = cm.effect;
-  out.clamp = cm.clamp;
-  for (const EffectCandidate& c : out.candidates)
-    if (c.effect == out.effect) out.confidence = c.score;
-  context.solution = &out.fitted_solution;
-  EffectDescription d = cm.describe(fits[chosen].x, context);
-  out.parameters = std::move(d.parameters);
-  out.vectors = std::move(d.vectors);
-  out.units = std::move(d.units);
-  out.interval = d.interval;
+  DescribeResult(rec, ctx, models, fits, selection.Rank(final_solves.rejected), final_solves,
+                 &out);
   // A best fit that leaves far more than the noise is not a diagnosis.
   if (!out.explained) out.confidence = std::min(out.confidence, 0.1);
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -72,7 +72,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     EffectModel m;
     m.effect = ShapeEffect::kIntrinsicCurvature;
     m.physical_parameters = 4;
-    m.names = {"centre", "width", "kappa1", "kappa2"};
+    // x = (centre, width, kappa1, kappa2)
     m.scale = scales({0.02 * L, 0.02 * L, 1.0, 1.0});
     for (int i = 0; i < 6; ++i)
       for (double w : {L / 8, L / 3}) {
@@ -108,7 +108,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.effect = ShapeEffect::kClampOrientation;
     m.clamp = k;
     m.physical_parameters = 2;
-    m.names = {"rot_d1", "rot_d2"};
+    // x = (rot_d1, rot_d2)
     m.scale = scales({0.02, 0.02});
     m.starts = {Eigen::VectorXd::Zero(2)};
     m.apply = [=](const Eigen::VectorXd& x) {
@@ -140,7 +140,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     EffectModel m;
     m.effect = ShapeEffect::kWeightStiffnessRatio;
     m.physical_parameters = 1;
-    m.names = {"log_ratio"};
+    // x = (log_ratio)
     m.scale = scales({0.05});
     m.starts = {Eigen::VectorXd::Zero(1)};
     m.apply = [=](const Eigen::VectorXd& x) {
@@ -162,7 +162,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     EffectModel m;
     m.effect = ShapeEffect::kAnisotropicBending;
     m.physical_parameters = 2;
-    m.names = {"u1", "u2"};
+    // x = (u1, u2)
     m.scale = scales({0.05, 0.05});
     // (u1, u2) -> -(u1, u2) is the inverse ratio at the same angle, i.e. the same ratio a
     // quarter-turn on: eight directions cover the principal angle's half-turn with both branches
@@ -194,7 +194,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     EffectModel m;
     m.effect = ShapeEffect::kSupportContact;
     m.physical_parameters = 4;
-    m.names = {"s", "fx", "fy", "fz"};
+    // x = (s, fx, fy, fz)
     const double w = std::max(1e-6, nominal.material.linear_density * nominal.gravity.norm() * L);
     m.scale = scales({0.01 * L, 0.05 * w, 0.05 * w, 0.05 * w});
     for (int i = 0; i < 8; ++i) {
@@ -231,7 +231,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.effect = ShapeEffect::kTwistPreload;
     m.clamp = k;
     m.physical_parameters = 1;
-    m.names = {"angle"};
+    // x = (angle)
     m.scale = scales({0.05});
     for (double a : {0.0, 0.8, -0.8, 1.6, -1.6, 2.4, -2.4})
       m.starts.push_back(Eigen::VectorXd::Constant(1, a));
@@ -281,7 +281,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.effect = ShapeEffect::kClampCompliance;
     m.clamp = k;
     m.physical_parameters = 1;
-    m.names = {"log_compliance"};
+    // x = (log_compliance)
     m.scale = scales({0.2});
     const double moment = k < static_cast<int>(reaction_moment.size()) ? reaction_moment[k] : 0.0;
     const double c0 = 0.02 / std::max(moment, 1e-9);

@@ -41,7 +41,6 @@ struct EffectModel {
   ShapeEffect effect = ShapeEffect::kNone;
   int physical_parameters = 0;          // counted by the selection criterion
   std::optional<int> clamp;             // clamp (support) index for clamp effects
-  std::vector<std::string> names;       // fit parameter names
   Eigen::VectorXd scale;                // typical size of every parameter
   std::vector<Eigen::VectorXd> starts;  // starting physical parameters
   /// Parameters -> the changed spec.

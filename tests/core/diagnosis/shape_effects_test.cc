@@ -47,7 +47,6 @@ TEST(ShapeEffectsTest, EveryModelIsComplete) {
   EXPECT_EQ(models.front().effect, ShapeEffect::kNone);
   for (const EffectModel& m : models) {
     SCOPED_TRACE(ToString(m.effect));
-    EXPECT_EQ(static_cast<int>(m.names.size()), m.physical_parameters);
     EXPECT_EQ(m.scale.size(), m.physical_parameters);
     ASSERT_FALSE(m.starts.empty());
     for (const Eigen::VectorXd& x : m.starts) EXPECT_EQ(x.size(), m.physical_parameters);
