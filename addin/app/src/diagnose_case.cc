@@ -6,6 +6,7 @@
 #include <optional>
 #include <filesystem>
 
+#include "cablefit/app/shape_explanation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
@@ -129,7 +130,7 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
       throw FileError(observation_path, e.what());
     }
   });
-  out->effect = d.effect;
+  out->effect = ToString(d.effect);
   out->confidence = d.confidence;
   out->interval = d.interval;
   out->clamp = d.clamp;
@@ -138,10 +139,11 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   out->baseline = {d.baseline_max, d.baseline_rms};
   out->fitted = {d.fitted_max, d.fitted_rms};
   out->deviation_unit = "m";
-  out->explanation = d.explanation;
+  out->explanation = ExplainShapeDiagnosis(d, rc.nominal);
   out->explained = d.explained;
   for (const std::string& note : d.notes) out->notes.push_back(out->observation_source + ": " + note);
-  for (const EffectCandidate& c : d.candidates) out->candidates.emplace_back(c.effect, c.score);
+  for (const EffectCandidate& c : d.candidates)
+    out->candidates.emplace_back(ToString(c.effect), c.score);
   out->shape = std::move(d);
 }
 

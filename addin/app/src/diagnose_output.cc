@@ -16,6 +16,23 @@ nlohmann::json DeviationJson(const Deviation& d) {
           {"rms_deviation", json::NumberOrNull(d.rms)}};
 }
 
+// A shape candidate's own fit, beyond the format's effect and score: its criterion, deviations
+// (thinned points, the fits' accuracy), where and how it acts, and whether its fit converged.
+void AddFitDetails(const EffectCandidate& e, nlohmann::json* c) {
+  nlohmann::json parameters = nlohmann::json::object();
+  for (const auto& [name, value] : e.parameters) parameters[name] = json::NumberOrNull(value);
+  for (const auto& [name, v] : e.vectors) parameters[name] = json::ToJson(v);
+  (*c)["bic"] = json::NumberOrNull(e.bic);
+  (*c)["parameter_count"] = e.parameter_count;
+  (*c)["max_deviation"] = json::NumberOrNull(e.max_deviation);
+  (*c)["rms_deviation"] = json::NumberOrNull(e.rms_deviation);
+  (*c)["interval"] = e.interval ? nlohmann::json::array({e.interval->first, e.interval->second})
+                                : nlohmann::json(nullptr);
+  (*c)["clamp"] = e.clamp ? nlohmann::json(*e.clamp) : nlohmann::json(nullptr);
+  (*c)["parameters"] = std::move(parameters);
+  (*c)["converged"] = e.converged;
+}
+
 }  // namespace
 
 nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
@@ -23,8 +40,13 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
   for (const auto& [name, value] : d.parameters) parameters[name] = json::NumberOrNull(value);
   for (const auto& [name, v] : d.vectors) parameters[name] = json::ToJson(v);
   nlohmann::json candidates = nlohmann::json::array();
-  for (const auto& [effect, score] : d.candidates)
-    candidates.push_back({{"effect", effect}, {"score", json::NumberOrNull(score)}});
+  for (const auto& [effect, score] : d.candidates) {
+    nlohmann::json c = {{"effect", effect}, {"score", json::NumberOrNull(score)}};
+    if (d.shape)
+      for (const EffectCandidate& e : d.shape->candidates)
+        if (ToString(e.effect) == effect) AddFitDetails(e, &c);
+    candidates.push_back(std::move(c));
+  }
   nlohmann::json j;
   j["format"] = kDiagnosisFormat;
   j["case"] = d.recording.name;
@@ -45,7 +67,7 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
     j["adequacy"] = {{"test",
                       "chi-square of the best fit's offsets against noise_allowance times the "
                       "noise; explained when it is within the 99.9 % quantile"},
-                     {"best_effect", a.best_effect},
+                     {"best_effect", ToString(a.best_effect)},
                      {"noise_sigma", json::NumberOrNull(a.noise_sigma)},
                      {"noise_allowance", json::NumberOrNull(a.noise_allowance)},
                      {"points", a.points},

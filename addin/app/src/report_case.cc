@@ -29,14 +29,22 @@ std::string ParametersTable(const DiagnosedCase& d) {
   h << "<table><thead><tr><th>parameter</th><th class=\"num\">value</th><th>unit</th></tr>"
        "</thead><tbody>\n";
   const std::string xu = CurveUnit(d, true), yu = CurveUnit(d, false);
+  // A shape diagnosis states its parameters' units; a force diagnosis's follow the curve's.
+  auto unit_of = [&](const std::string& name) {
+    if (d.shape) {
+      const auto it = d.shape->units.find(name);
+      if (it != d.shape->units.end()) return it->second == "-" ? std::string("\u2013") : it->second;
+    }
+    return ParameterUnit(name, xu, yu);
+  };
   for (const auto& [name, value] : d.parameters) {
-    const std::string unit = ParameterUnit(name, xu, yu);
+    const std::string unit = unit_of(name);
     h << "<tr><td><code>" << HtmlEscape(name) << "</code></td><td class=\"num\">"
       << HtmlEscape(FormatParameter(value, unit)) << "</td><td>" << HtmlEscape(unit)
       << "</td></tr>\n";
   }
   for (const auto& [name, v] : d.vectors) {
-    const std::string unit = ParameterUnit(name, xu, yu);
+    const std::string unit = unit_of(name);
     h << "<tr><td><code>" << HtmlEscape(name) << "</code></td><td class=\"num\">["
       << FormatNumber(v.x(), 4) << ", " << FormatNumber(v.y(), 4) << ", " << FormatNumber(v.z(), 4)
       << "]</td><td>" << HtmlEscape(unit) << " (world x, y, z)</td></tr>\n";
@@ -47,7 +55,7 @@ std::string ParametersTable(const DiagnosedCase& d) {
 
 std::string CandidatesTable(const DiagnosedCase& d) {
   // Shape fits also carry each candidate's BIC (shown relative to the best, so the margin to the
-  // runner-up is readable) and, when the diagnosis provides them, its deviations.
+  // runner-up is readable), its deviations, clamp, interval and whether its fit converged.
   std::vector<const EffectCandidate*> shape;
   bool deviations = false;
   double best_bic = 0.0;
@@ -55,7 +63,7 @@ std::string CandidatesTable(const DiagnosedCase& d) {
     const EffectCandidate* c = nullptr;
     if (d.shape)
       for (const EffectCandidate& e : d.shape->candidates)
-        if (e.effect == effect) c = &e;
+        if (ToString(e.effect) == effect) c = &e;
     shape.push_back(c);
     if (c) deviations = deviations || c->max_deviation > 0.0;
   }
@@ -66,6 +74,7 @@ std::string CandidatesTable(const DiagnosedCase& d) {
        "<th>posterior weight</th>";
   if (has_bic) h << "<th class=\"num\">\u0394BIC</th><th class=\"num\">parameters</th>";
   if (deviations) h << "<th class=\"num\">max deviation</th><th class=\"num\">rms deviation</th>";
+  if (has_bic) h << "<th>clamp</th><th>interval</th><th>fit</th>";
   h << "</tr></thead><tbody>\n";
   for (std::size_t i = 0; i < d.candidates.size(); ++i) {
     const auto& [effect, score] = d.candidates[i];
@@ -89,6 +98,14 @@ std::string CandidatesTable(const DiagnosedCase& d) {
           << c->rms_deviation << "\">" << FormatLength(c->rms_deviation) << "</td>";
       else
         h << "<td></td><td></td>";
+    }
+    if (has_bic) {
+      if (c)
+        h << "<td>" << (c->clamp ? std::to_string(*c->clamp) : "\u2013") << "</td><td>"
+          << (c->interval ? FormatInterval(*c->interval) + " m" : "\u2013") << "</td><td>"
+          << (c->converged ? "converged" : "iteration limit") << "</td>";
+      else
+        h << "<td></td><td></td><td></td>";
     }
     h << "</tr>\n";
   }
@@ -144,7 +161,7 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
       const ShapeAdequacy& a = d.shape->adequacy;
       h << Fact("explained",
                 std::string(d.explained ? "yes" : "no") + " (best fit " +
-                    HtmlEscape(a.best_effect) + ": chi-square " + FormatNumber(a.chi_square, 3) +
+                    HtmlEscape(ToString(a.best_effect)) + ": chi-square " + FormatNumber(a.chi_square, 3) +
                     " for " + std::to_string(a.degrees_of_freedom) + " d.o.f., 99.9 % limit " +
                     FormatNumber(a.limit, 3) + ")");
     }

@@ -16,7 +16,10 @@ LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, E
   res.ok = true;
   res.cost = 0.5 * r.squaredNorm();
   const int n = static_cast<int>(x0.size());
-  if (n == 0) return res;
+  if (n == 0) {
+    res.converged = true;
+    return res;
+  }
   double mu = -1.0, nu = 2.0;
   for (int it = 0; it < options.max_iterations; ++it) {
     res.iterations = it + 1;
@@ -67,13 +70,19 @@ LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, E
         r = rn;
         res.cost = cn;
         improved = true;
-        if (decrease < options.cost_tolerance) return res;
+        if (decrease < options.cost_tolerance) {
+          res.converged = true;
+          return res;
+        }
         break;
       }
       mu *= nu;
       nu *= 2.0;
     }
-    if (!improved) break;
+    if (!improved) {
+      res.converged = true;
+      break;
+    }
   }
   return res;
 }

@@ -19,6 +19,9 @@ struct LmResult {
   int iterations = 0;
   int evaluations = 0;
   bool ok = false;    // at least one successful evaluation
+  /// The cost stopped decreasing (relative decrease below cost_tolerance, or no damped step
+  /// lowers it); false when the iterations ran out or the Jacobian could not be evaluated.
+  bool converged = false;
 };
 
 /// `residual(x, &r)` returns false when the model cannot be evaluated at x (e.g. the solver did

@@ -1,28 +1,53 @@
 // The catalogue's shape effects as parametrised changes of the nominal RodSpec
 // (recording-v1.md, "The catalogue of effects"). The case's clamp frames are taken as given:
 // a clamp's twist about the cable is the one its normal states unless twist_preload says
-// otherwise.
+// otherwise. Every model maps its fit parameters both ways from one place: `apply` builds the
+// changed spec, `describe` states the same change in the catalogue's terms, so a bound (where a
+// contact may sit, how narrow a curved span may be) is written once.
 #pragma once
 
 #include <Eigen/Core>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "cablefit/core/diagnosis/shape_effect.h"
 #include "cablefit/core/rod/rod_spec.h"
+#include "cablefit/core/solver/rod_solution.h"
 
 namespace cablefit {
 
+/// What `describe` needs besides the parameters.
+struct EffectDescriptionContext {
+  /// Where the nominal differs most from the recording [m]: the interval of an effect that acts
+  /// on the whole cable or at a clamp.
+  std::pair<double, double> mismatch{0.0, 0.0};
+  /// The changed model's solution (reactions), when there is one.
+  const RodSolution* solution = nullptr;
+};
+
+/// An effect in the catalogue's terms (diagnosis.json's parameters, interval).
+struct EffectDescription {
+  std::map<std::string, double> parameters;   // curvature, angle, ratio, force, ...
+  std::map<std::string, std::string> units;   // unit of each parameter and vector ("-": none)
+  std::map<std::string, Vec3> vectors;        // axis, force_vector (world)
+  std::optional<std::pair<double, double>> interval;  // [m]
+};
+
 struct EffectModel {
-  std::string effect;                   // catalogue name
+  ShapeEffect effect = ShapeEffect::kNone;
   int physical_parameters = 0;          // counted by the selection criterion
   std::optional<int> clamp;             // clamp (support) index for clamp effects
-  std::vector<std::string> names;       // physical parameter names (for reports)
   Eigen::VectorXd scale;                // typical size of every parameter
   std::vector<Eigen::VectorXd> starts;  // starting physical parameters
   /// Parameters -> the changed spec.
   std::function<RodSpec(const Eigen::VectorXd&)> apply;
+  /// Parameters -> the change in the catalogue's terms.
+  std::function<EffectDescription(const Eigen::VectorXd&, const EffectDescriptionContext&)>
+      describe;
 };
 
 /// Rotates support `clamp`'s normal by `angle` [rad] about its tangent (right-hand rule).

@@ -185,7 +185,7 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
     obs.s = sc.s;
     obs.noise_sigma = std::max(1e-5, sc.noise_sigma / 10.0);
     const ShapeDiagnosis dg = DiagnoseShape(told, obs);
-    out.got = dg.explained ? dg.effect : "unexplained";
+    out.got = dg.explained ? ToString(dg.effect) : "unexplained";
     out.improvement = dg.baseline_max / std::max(dg.fitted_max, 1e-12);
     if (truth_clamp && out.got == label) {
       out.clamp_right = dg.clamp == truth_clamp;
@@ -203,7 +203,7 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
     for (const std::string& note : dg.notes) std::printf("          note: %s\n", note.c_str());
     if (out.got != label) {  // how close the hidden effect came
       for (const EffectCandidate& c : dg.candidates)
-        std::printf("          candidate %-24s bic %.1f\n", c.effect.c_str(), c.bic);
+        std::printf("          candidate %-24s bic %.1f\n", ToString(c.effect), c.bic);
     }
   } catch (const std::exception& e) {
     out.got = "error";

@@ -54,10 +54,10 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
     const ShapeObservation obs = FromScan(rc, (d / "scan.ply").string());
     const ShapeDiagnosis dg = DiagnoseShape(rc.nominal, obs);
     std::printf("%-30s truth %-24s got %-24s conf %.2f base %.2f mm -> fit %.3f mm  %.1f s\n",
-                d.filename().c_str(), truth.effect.c_str(), dg.effect.c_str(), dg.confidence,
+                d.filename().c_str(), truth.effect.c_str(), ToString(dg.effect), dg.confidence,
                 dg.baseline_max * 1e3, dg.fitted_max * 1e3, dg.seconds);
     for (const auto& c : dg.candidates)
-      std::printf("      %-24s score %.3f bic %.1f\n", c.effect.c_str(), c.score, c.bic);
+      std::printf("      %-24s score %.3f bic %.1f\n", ToString(c.effect), c.score, c.bic);
     for (const auto& [k, v] : dg.parameters) std::printf("      param %s = %g\n", k.c_str(), v);
     for (const auto& [k, v] : truth.parameters) std::printf("      truth %s = %g\n", k.c_str(), v);
     if (dg.interval && truth.interval)
@@ -68,8 +68,8 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
                 dg.explained, dg.adequacy.chi_square, dg.adequacy.limit,
                 dg.adequacy.degrees_of_freedom, dg.adequacy.noise_sigma * 1e6);
     EXPECT_TRUE(dg.explained) << d;
-    if (dg.effect == truth.effect) ++correct;
-    if (dg.effect != truth.effect || truth.effect == "none") continue;
+    if (ToString(dg.effect) == truth.effect) ++correct;
+    if (ToString(dg.effect) != truth.effect || truth.effect == "none") continue;
     // Localised and quantified.
     ASSERT_TRUE(dg.interval && truth.interval) << d;
     EXPECT_GE(IoU(*dg.interval, *truth.interval), 0.4) << d;

@@ -12,6 +12,7 @@
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/diagnosis/shape_effect.h"
 #include "cablefit/core/solver/rod_solution.h"
 #include "cablefit/core/rod/rod_spec.h"
 #include "cablefit/core/solver/statics_solver.h"
@@ -48,22 +49,26 @@ struct ShapeDiagnosisOptions {
   bool IsValid(std::string* why) const;
 };
 
+/// One effect as the selection saw it: its best fit (the best clamp for clamp effects).
 struct EffectCandidate {
-  std::string effect;        // catalogue name
+  ShapeEffect effect = ShapeEffect::kNone;
   double score = 0.0;        // posterior weight in [0, 1] from BIC (higher is better)
   double bic = 0.0;          // Bayesian information criterion (lower is better)
   int parameter_count = 0;
-  double max_deviation = 0.0;  // [m] fitted model vs observation, seen points
+  /// [m] the fit vs the observation: the thinned points the fits use, at the fits' forward
+  /// accuracy (ShapeDiagnosis::fitted_max is the chosen model's on every point, accurately).
+  double max_deviation = 0.0;
   double rms_deviation = 0.0;  // [m]
-  std::map<std::string, double> parameters;
+  std::map<std::string, double> parameters;  // in the catalogue's terms, as ShapeDiagnosis's
+  std::map<std::string, Vec3> vectors;       // axis, force_vector (world)
   std::optional<int> clamp;
-  std::optional<std::pair<double, double>> interval;
-  bool converged = true;
+  std::optional<std::pair<double, double>> interval;  // [m]
+  bool converged = false;  // the fit stopped on a minimum (not on its iteration limit)
 };
 
 /// Whether the best fit explains the recording: its residual against the recording's own noise.
 struct ShapeAdequacy {
-  std::string best_effect;     // the model with the smallest residual
+  ShapeEffect best_effect = ShapeEffect::kNone;  // the model with the smallest residual
   int points = 0;              // thinned points the fits used
   int degrees_of_freedom = 0;  // 2 points - the best model's parameters
   double chi_square = 0.0;     // |offsets|^2 / (noise_allowance noise_sigma)^2 of the best fit
@@ -72,11 +77,12 @@ struct ShapeAdequacy {
   double noise_allowance = 1.0;  // ShapeDiagnosisOptions::noise_allowance
 };
 
+/// The diagnosis as data; the report layer words it for a person.
 struct ShapeDiagnosis {
-  std::string effect = "none";
+  ShapeEffect effect = ShapeEffect::kNone;
   double confidence = 0.0;
   /// False when no catalogue effect (nor none) fits within the noise: then `effect` is only the
-  /// best candidate, `confidence` is low and the explanation says what to check.
+  /// best candidate and `confidence` is low.
   bool explained = true;
   ShapeAdequacy adequacy;
   std::vector<std::string> notes;  // what was done to the recording (e.g. reversed)
@@ -84,9 +90,10 @@ struct ShapeDiagnosis {
   std::optional<int> clamp;
   std::map<std::string, double> parameters;   // spec names: curvature, angle, ratio, force, ...
   std::map<std::string, Vec3> vectors;        // axis, force_vector, direction vectors (world)
+  /// Unit of every parameter and vector ("1/m", "rad", "N m/rad", ...; "-": dimensionless).
+  std::map<std::string, std::string> units;
   double baseline_max = 0.0, baseline_rms = 0.0;  // [m] nominal vs observation (seen points)
   double fitted_max = 0.0, fitted_rms = 0.0;      // [m] fitted vs observation
-  std::string explanation;
   std::vector<EffectCandidate> candidates;        // best first
   RodSpec fitted_spec;
   RodSolution nominal_solution;   // extrapolated centreline (nodes), reactions ...

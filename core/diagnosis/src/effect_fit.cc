@@ -1,0 +1,102 @@
+#include "effect_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "cablefit/core/base/errors.h"
+#include "curve_projection.h"
+#include "levenberg_marquardt.h"
+
+namespace cablefit {
+namespace {
+
+bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eigen::VectorXd* r,
+              RodSolution* solution = nullptr) {
+  SimulationResult res;
+  try {
+    res = sim->Resimulate(spec);
+  } catch (const InvalidInput&) {
+    return false;
+  }
+  if (!res.converged) return false;
+  const Polyline curve =
+      SampleCenterline(res.solution.centerline, UniformArcLengths(ctx.length, ctx.curve_samples));
+  CurveProjection p = ProjectOntoCurve(curve, ctx.points, ctx.s, ctx.window);
+  *r = Eigen::Map<const Eigen::VectorXd>(p.offset.data(), p.offset.size());
+  if (solution) *solution = std::move(res.solution);
+  return true;
+}
+
+}  // namespace
+
+FitContext MakeFitContext(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& s,
+                          double length) {
+  FitContext ctx;
+  ctx.points = points;
+  ctx.s = s;
+  ctx.length = length;
+  // A tenth of the cable plus 2 cm: a point's closest point is near its own arc length, but
+  // the recorded arc lengths are only approximate.
+  ctx.window = 0.1 * length + 0.02;
+  // Half-millimetre sampling keeps the chord error of the projection far below scan noise.
+  ctx.curve_samples = std::max(200, static_cast<int>(length / 5e-4));
+  return ctx;
+}
+
+Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, const EffectModel& m,
+              int max_iterations) {
+  struct Run {
+    RodSimulator sim;
+    LmResult lm;
+    int branch = 0;
+  };
+  auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
+    auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
+      return Residual(ctx, &r->sim, m.apply(x), res);
+    };
+    LmOptions opt;
+    opt.max_iterations = iterations;
+    r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
+  };
+  // Many starts (interval and contact positions, anisotropy angles, clamp twists): a few
+  // iterations each, then only the most promising ones are carried to convergence. Starts that
+  // end in the same place are one basin: the survivors are distinct ones.
+  const bool screen = m.starts.size() > 2;
+  std::vector<Run> runs;
+  for (size_t b = 0; b < bases.size(); ++b)
+    for (const Eigen::VectorXd& start : m.starts) {
+      Run r{bases[b], {}, static_cast<int>(b)};
+      run(&r, start, screen ? 4 : max_iterations);
+      if (r.lm.ok) runs.push_back(std::move(r));
+    }
+  auto by_cost = [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; };
+  std::sort(runs.begin(), runs.end(), by_cost);
+  if (screen) {
+    std::vector<Run> kept;
+    for (Run& r : runs) {
+      if (kept.size() >= 3) break;
+      bool same = false;
+      for (const Run& k : kept)
+        same = same || (r.branch == k.branch &&
+                        (r.lm.x - k.lm.x).cwiseQuotient(m.scale).cwiseAbs().maxCoeff() < 1.0);
+      if (!same) kept.push_back(std::move(r));
+    }
+    runs = std::move(kept);
+    for (Run& r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
+    std::sort(runs.begin(), runs.end(), by_cost);
+  }
+  Fit best;
+  best.model = &m;
+  if (!runs.empty()) {
+    best.x = runs.front().lm.x;
+    best.cost = runs.front().lm.cost;
+    best.branch = runs.front().branch;
+    best.converged = runs.front().lm.converged;
+    Residual(ctx, &runs.front().sim, m.apply(best.x), &best.offsets, &best.solution);
+    best.ok = true;
+  }
+  return best;
+}
+
+}  // namespace cablefit

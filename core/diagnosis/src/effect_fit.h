@@ -1,0 +1,44 @@
+// Fitting one effect model to the thinned recording: Levenberg-Marquardt on the offsets of the
+// seen points from the simulated curve, warm-starting every forward solve from the last,
+// multi-start where the problem is not convex, from every equilibrium of the nominal.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "shape_effects.h"
+
+namespace cablefit {
+
+/// The points the fits compare against and how the simulated curve is sampled.
+struct FitContext {
+  Eigen::Matrix3Xd points;  // 3 x n [m] thinned observation points
+  Eigen::VectorXd s;        // n [m] their arc lengths
+  double length = 0.0;      // [m] the cable's
+  double window = 0.0;      // [m] how far along the curve a point's closest point is searched
+  int curve_samples = 0;    // the simulated curve is resampled uniformly at this many points
+};
+
+/// The context for `points` at arc lengths `s` on a cable of `length`.
+FitContext MakeFitContext(const Eigen::Matrix3Xd& points, const Eigen::VectorXd& s,
+                          double length);
+
+struct Fit {
+  const EffectModel* model = nullptr;
+  Eigen::VectorXd x;        // the model's fit parameters
+  double cost = INFINITY;   // 1/2 |offsets|^2 [m^2]
+  Eigen::VectorXd offsets;  // 3n [m] offsets of the thinned points from the fitted curve
+  RodSolution solution;     // the fitted solve (centreline: warm start of the final solve)
+  int branch = 0;           // which equilibrium of the nominal the fit started from
+  bool converged = false;   // the best run's Levenberg-Marquardt stopped on a minimum
+  bool ok = false;          // false: no start could be solved
+};
+
+/// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the
+/// nominal, each warm).
+Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+              const EffectModel& model, int max_iterations);
+
+}  // namespace cablefit

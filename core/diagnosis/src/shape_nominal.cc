@@ -1,0 +1,70 @@
+#include "shape_nominal.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "cablefit/core/base/errors.h"
+
+namespace cablefit {
+
+SimulationOptions FitSimulationOptions(const RodSpec& nominal) {
+  SimulationOptions fit_opt;
+  fit_opt.coarse_element_length = nominal.length / 40;
+  fit_opt.min_levels = fit_opt.max_levels = 2;
+  return fit_opt;
+}
+
+NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecording& recording) {
+  const SimulationOptions fit_opt = FitSimulationOptions(nominal);
+  const double L = nominal.length;
+  const Polyline& initial = recording.initial;
+  RodSimulator base(fit_opt);
+  const SimulationResult nominal_fit_solution = base.Simulate(nominal, &initial);
+  if (!nominal_fit_solution.converged)
+    throw InvalidInput("the nominal set-up could not be solved from the recorded shape: " +
+                       nominal_fit_solution.solution.summary.message);
+  NominalBranches out;
+  for (const auto& re : nominal_fit_solution.solution.reactions)
+    out.reaction_moment.push_back(re.moment.norm());
+  // Other equilibria of the nominal. A cable that sags little, or hangs near a fold, can rest in
+  // another equilibrium than the one the recorded shape leads the solver to (an effect can tip
+  // it over): the fits also start from the solver's own start (clamps joined smoothly, loads
+  // continued) and from the recorded sag mirrored through the chord, when those settle visibly
+  // elsewhere (20 noise sigmas: far beyond the recording's scatter).
+  out.bases = {base};
+  out.names = {"the recorded shape"};
+  std::vector<Polyline> shapes{nominal_fit_solution.solution.centerline};
+  const Eigen::VectorXd at = UniformArcLengths(L, 101);
+  const double noise_sigma = recording.observation.noise_sigma;
+  auto try_branch = [&](const Polyline* start, const char* name) {
+    RodSimulator sim(fit_opt);
+    SimulationResult r;
+    try {
+      r = sim.Simulate(nominal, start);
+    } catch (const InvalidInput&) {
+      return;
+    }
+    if (!r.converged || !r.solution.summary.stable) return;
+    const Eigen::Matrix3Xd p = SampleCenterline(r.solution.centerline, at).points;
+    for (const Polyline& q : shapes)
+      if ((SampleCenterline(q, at).points - p).colwise().norm().maxCoeff() < 20.0 * noise_sigma)
+        return;
+    shapes.push_back(r.solution.centerline);
+    out.bases.push_back(sim);
+    out.names.push_back(name);
+  };
+  try_branch(nullptr, "the solver's own start");
+  if (nominal.supports.size() > 1) {
+    const Vec3 a = nominal.supports.front().position, b = nominal.supports.back().position;
+    if ((b - a).norm() > 1e-9) {
+      const Eigen::AngleAxisd half_turn(M_PI, (b - a).normalized());
+      Polyline mirrored = initial;
+      for (int i = 0; i < mirrored.size(); ++i)
+        mirrored.points.col(i) = a + half_turn * (Vec3(initial.points.col(i)) - a);
+      try_branch(&mirrored, "the recorded sag mirrored through the chord");
+    }
+  }
+  return out;
+}
+
+}  // namespace cablefit

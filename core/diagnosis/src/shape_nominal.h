@@ -1,0 +1,28 @@
+// Second stage of the shape diagnosis: the nominal set-up solved for the fits, from the
+// recorded shape and from the other starts that settle in another equilibrium.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/core/rod/rod_spec.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "shape_recording.h"
+
+namespace cablefit {
+
+struct NominalBranches {
+  /// One warm simulator per distinct equilibrium; the first is the one the recorded shape
+  /// leads to.
+  std::vector<RodSimulator> bases;
+  std::vector<std::string> names;       // how each was reached ("the recorded shape", ...)
+  std::vector<double> reaction_moment;  // [N m] moment magnitude at every support (first)
+};
+
+/// The forward model of the fits: two levels with extrapolation.
+SimulationOptions FitSimulationOptions(const RodSpec& nominal);
+
+/// Throws InvalidInput when the nominal set-up cannot be solved from the recorded shape.
+NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecording& recording);
+
+}  // namespace cablefit

@@ -1,0 +1,85 @@
+#include "cablefit/app/shape_explanation.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace cablefit::addin {
+namespace {
+
+bool Has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+RodSpec TwoClamps() {
+  RodSpec spec;
+  spec.length = 1.0;
+  SupportSpec a, b;
+  b.s = 1.0;
+  spec.supports = {a, b};
+  return spec;
+}
+
+ShapeDiagnosis TwistAtFirstClamp() {
+  ShapeDiagnosis d;
+  d.effect = ShapeEffect::kTwistPreload;
+  d.clamp = 0;
+  d.confidence = 0.6;
+  d.parameters = {{"angle", 0.5}, {"torque", 0.002}, {"alternative_clamp", 1},
+                  {"alternative_angle", -0.5}};
+  d.baseline_max = 0.004;
+  d.fitted_max = 0.0002;
+  EffectCandidate twist, compliance;
+  twist.effect = ShapeEffect::kTwistPreload;
+  twist.score = 0.6;
+  compliance.effect = ShapeEffect::kClampCompliance;
+  compliance.score = 0.4;
+  d.candidates = {twist, compliance};
+  return d;
+}
+
+TEST(ShapeExplanationTest, TheNominalNeedsNoChange) {
+  ShapeDiagnosis d;
+  d.baseline_max = 0.0003;
+  d.baseline_rms = 0.0001;
+  const std::string text = ExplainShapeDiagnosis(d, TwoClamps());
+  EXPECT_EQ(text.rfind("The nominal model explains the recording within its noise (max deviation "
+                       "0.3 mm, rms 0.1 mm)",
+                       0),
+            0u)
+      << text;
+}
+
+TEST(ShapeExplanationTest, AnEffectIsWordedFromItsParameters) {
+  const std::string text = ExplainShapeDiagnosis(TwistAtFirstClamp(), TwoClamps());
+  EXPECT_TRUE(Has(text, "The clamp at s=0.000 m is rotated 28.6 deg about the cable axis")) << text;
+  EXPECT_TRUE(Has(text, "a torque of 2.00 mN m")) << text;
+  EXPECT_TRUE(Has(text, "from 4 mm to 0.2 mm")) << text;
+  // The alternative the shape cannot tell apart, at the other clamp.
+  EXPECT_TRUE(Has(text, "the clamp at s=1.000 m turned -28.6 deg gives the same shape")) << text;
+  // A close runner-up is named.
+  EXPECT_TRUE(Has(text, "hardly separates it from clamp_compliance (scores 0.60 and 0.40)"))
+      << text;
+}
+
+TEST(ShapeExplanationTest, AnUnexplainedRecordingSaysWhatToCheck) {
+  ShapeDiagnosis d = TwistAtFirstClamp();
+  d.explained = false;
+  d.adequacy.noise_sigma = 1e-4;
+  d.adequacy.noise_allowance = 3.0;
+  d.adequacy.chi_square = 5000;
+  d.adequacy.degrees_of_freedom = 300;
+  d.adequacy.limit = 390;
+  const std::string text = ExplainShapeDiagnosis(d, TwoClamps());
+  EXPECT_EQ(text.rfind("No effect of the catalogue explains the recording: the best fit "
+                       "(twist_preload)",
+                       0),
+            0u)
+      << text;
+  EXPECT_TRUE(Has(text, "5000 for 300 degrees of freedom, 99.9 % limit 390")) << text;
+  EXPECT_TRUE(Has(text, "Best candidate: The clamp at s=0.000 m")) << text;
+  EXPECT_FALSE(Has(text, "hardly separates")) << text;
+}
+
+}  // namespace
+}  // namespace cablefit::addin
