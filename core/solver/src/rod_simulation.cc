@@ -7,7 +7,7 @@
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/rod/initial_shape.h"
-#include "cablefit/core/solver/richardson.h"
+#include "cablefit/core/solver/refinement.h"
 
 namespace cablefit {
 namespace {
@@ -66,8 +66,11 @@ SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* ini
   span_elements_ = SpanCounts(spec, h0);
   const Polyline curve = initial ? ReparameteriseToLength(*initial, spec.length)
                                  : DefaultInitialCurve(spec);
-  std::vector<StaticsSummary> summaries;
-  for (int level = 0; level < options_.max_levels; ++level) {
+  RefinementPlan plan;
+  plan.accuracy = options_.accuracy;
+  plan.min_levels = options_.min_levels;
+  plan.max_levels = options_.max_levels;
+  const RefinedSolution refined = SolveRefined(plan, [&](int level) {
     Discretisation disc;
     disc.elements_per_span = span_elements_;
     disc.refinement = level;
@@ -75,13 +78,13 @@ SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* ini
     const RodModel& model = models_.back();
     RodState state = level == 0 ? MakeInitialState(model, curve)
                                 : TransferState(models_[level - 1], states_[level - 1], model);
-    StaticsSummary sum = SolveStatics(model, &state, options_.statics);
+    LevelSolution solved;
+    solved.summary = SolveStatics(model, &state, options_.statics);
+    solved.branches = {NodeCenterline(model, state)};
     states_.push_back(std::move(state));
-    summaries.push_back(sum);
-    if (!sum.converged()) break;
-    if (level + 1 >= options_.min_levels && LevelEstimate(level + 1) <= options_.accuracy) break;
-  }
-  return Finish(summaries, std::chrono::duration<double>(Clock::now() - t0).count());
+    return solved;
+  });
+  return Finish(refined.summaries, std::chrono::duration<double>(Clock::now() - t0).count());
 }
 
 SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
@@ -106,12 +109,6 @@ SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
     if (!sum.converged()) break;
   }
   return Finish(summaries, std::chrono::duration<double>(Clock::now() - t0).count());
-}
-
-double RodSimulator::LevelEstimate(int levels) const {
-  RichardsonLevels r;
-  for (int l = 0; l < levels; ++l) r.Add({NodeCenterline(models_[l], states_[l])});
-  return r.EstimatedError().total();
 }
 
 SimulationResult RodSimulator::Finish(std::vector<StaticsSummary> summaries, double seconds) {

@@ -60,8 +60,6 @@ class RodSimulator {
 
  private:
   SimulationResult Finish(std::vector<StaticsSummary> summaries, double seconds);
-  /// Estimated error of the extrapolation over the first `levels` solved levels.
-  double LevelEstimate(int levels) const;
 
   SimulationOptions options_;
   std::vector<RodModel> models_;
