@@ -94,7 +94,7 @@ SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
   std::vector<StaticsSummary> summaries;
   // A changed layout (a point load moved, a support added) gets new spans of the same size.
   if (SpanBreakpoints(spec).size() != span_elements_.size() + 1 ||
-      spec.length != models_[0].spec.length)
+      spec.length != models_[0].length)
     span_elements_ = SpanCounts(spec, coarse_h_);
   for (size_t level = 0; level < models_.size(); ++level) {
     Discretisation disc;

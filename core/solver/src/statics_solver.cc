@@ -338,7 +338,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   const auto t0 = Clock::now();
   StaticsSummary sum;
   const std::vector<char> free = FreeMask(model);
-  const double L = model.spec.length;
+  const double L = model.length;
   const double gtol = options.gradient_tolerance * model.force_scale * L;
   const double ctol = options.constraint_tolerance * L;
   if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
