@@ -9,7 +9,7 @@
 #include <numeric>
 
 #include "cablefit/core/base/errors.h"
-#include "cablefit/core/network/network_simulation.h"
+#include "cablefit/core/network/network_simulator.h"
 #include "cablefit/app/batch_pool.h"
 #include "relax_route.h"
 
@@ -168,7 +168,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   }
   for (int k : group.obstacles) spec.obstacles.push_back({drawing.solids[k].name, drawing.solids[k].mesh});
 
-  // Two resolutions; node positions of the coarse one are Richardson-extrapolated (O(h^2)).
+  // Two resolutions, extrapolated and estimated as a single cable is (SimulateNetwork).
   double total = 0.0, min_d = std::numeric_limits<double>::infinity();
   for (const BranchSpec& b : spec.branches) {
     total += b.length;
@@ -177,32 +177,24 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   NetworkOptions opt;
   opt.statics = options.statics;
   opt.element_length = std::clamp(total / 1500, 0.002, 0.01);
-  const NetworkSolution coarse = SolveNetwork(spec, opt);
-  opt.refinement = 1;
-  const NetworkSolution fine = SolveNetwork(spec, opt);
-  const bool converged = coarse.converged() && fine.converged();
-  double error = 0.0;
+  RefinementPlan plan;
+  plan.accuracy = options.accuracy;
+  plan.min_levels = plan.max_levels = 2;
+  const NetworkSimulation sim = SimulateNetwork(spec, plan, opt);
+  const NetworkSolution& fine = sim.finest;
+  const bool converged = sim.converged;
+  const double error = sim.estimated_error;
   GroupRelaxation out;
   for (int b = 0; b < nb; ++b) {
     CableRelaxation r;
     r.setup = setups[b];
     SimulationResult& res = r.result;
     res.converged = converged;
-    res.newton_iterations = coarse.summary.iterations + fine.summary.iterations;
-    res.level_elements = {coarse.num_elements, fine.num_elements};
-    res.solution.summary = converged ? fine.summary : (coarse.converged() ? fine.summary : coarse.summary);
-    const Polyline& pc = coarse.branches[b];
-    const Polyline& pf = fine.branches[b];
-    Polyline nodes = pc;
-    if (converged && pf.size() == 2 * pc.size() - 1) {
-      for (int k = 0; k < pc.size(); ++k) {
-        const Vec3 diff = pf.points.col(2 * k) - pc.points.col(k);
-        nodes.points.col(k) = pf.points.col(2 * k) + diff / 3.0;
-        error = std::max(error, diff.norm() / 3.0);
-      }
-    }
-    res.solution.centerline = nodes;
-    FramesFromNodes(converged ? pf : pc, &res.solution);
+    res.newton_iterations = sim.newton_iterations;
+    res.level_elements = sim.level_elements;
+    res.solution.summary = fine.summary;
+    res.solution.centerline = sim.centerlines[b];
+    FramesFromNodes(fine.branches[b], &res.solution);
     res.solution.twist_angle = std::numeric_limits<double>::quiet_NaN();
     size_t first = 0;
     for (int k = 0; k < b; ++k) first += spec.branches[k].supports.size();

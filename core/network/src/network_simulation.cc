@@ -282,7 +282,7 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   }
   // External node forces; the anchor takes what balances the rest.
   std::vector<Vec3> ext(nn);
-  const Vec3 g = st.load_factor * m.spec.gravity;
+  const Vec3 g = st.load_factor * m.gravity;
   for (int i = 0; i < nn; ++i) ext[i] = m.node_mass[i] * g;
   for (const auto& [node, f] : m.node_loads) ext[node] += st.load_factor * f;
   std::vector<Vec3> reaction = SupportReactions(m, st);

@@ -32,7 +32,7 @@ void AddLoadEnergy(const RodModel& model, const RodState& state, EnergyAccumulat
   const Vec3 p0 = state.support_position[model.anchor_support];
   double fixed = 0.0;
   for (int i = 0; i <= model.num_elements; ++i)
-    fixed -= model.node_mass[i] * model.spec.gravity.dot(p0);
+    fixed -= model.node_mass[i] * model.gravity.dot(p0);
   for (const auto& [node, f] : model.node_loads) fixed -= f.dot(p0);
   acc->value += state.load_factor * fixed;
 }

@@ -7,8 +7,7 @@
 
 #include "cablefit/core/base/distinct_numbers.h"
 #include "cablefit/core/base/errors.h"
-#include "cablefit/core/rod/internal/natural_curvature.h"
-#include "cablefit/core/rod/internal/rod_topology.h"
+#include "cablefit/core/rod/internal/model_compiler.h"
 
 namespace cablefit {
 namespace {
@@ -175,130 +174,10 @@ std::vector<double> SpanBreakpoints(const RodSpec& spec) {
 
 RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
   ValidateRodSpec(spec);
-  RodModel model;
-  model.spec = spec;
-  const double L = spec.length;
-  const std::vector<double> bp = SpanBreakpoints(spec);
-  const int spans = static_cast<int>(bp.size()) - 1;
-  if (!disc.elements_per_span.empty() && static_cast<int>(disc.elements_per_span.size()) != spans)
-    throw InvalidInput("discretisation has " + std::to_string(disc.elements_per_span.size()) +
-                       " span counts for " + std::to_string(spans) + " spans");
-  if (disc.elements_per_span.empty() && !(disc.element_length > 0))
-    throw InvalidInput("element length must be positive");
-
-  // Nodes.
-  std::vector<double> nodes = {0.0};
-  std::vector<int> breakpoint_node = {0};
-  for (int k = 0; k < spans; ++k) {
-    const double len = bp[k + 1] - bp[k];
-    int n = disc.elements_per_span.empty()
-                ? std::max(1, static_cast<int>(std::ceil(len / disc.element_length - 1e-9)))
-                : disc.elements_per_span[k];
-    n <<= disc.refinement;
-    if (n < 1) throw InvalidInput("a span needs at least one element");
-    for (int i = 1; i <= n; ++i) nodes.push_back(bp[k] + len * i / n);
-    nodes.back() = bp[k + 1];
-    breakpoint_node.push_back(static_cast<int>(nodes.size()) - 1);
-  }
-  const int ne = static_cast<int>(nodes.size()) - 1;
-  model.num_elements = ne;
-  model.node_s = Eigen::Map<Eigen::VectorXd>(nodes.data(), nodes.size());
-  model.element_length = model.node_s.tail(ne) - model.node_s.head(ne);
-  auto node_at = [&](double s) {
-    const auto it = std::min_element(bp.begin(), bp.end(), [s](double a, double b) {
-      return std::abs(a - s) < std::abs(b - s);
-    });
-    return breakpoint_node[it - bp.begin()];
-  };
-
-  // Supports.
-  const Mat3 k_material = MaterialStiffness(spec.material);
-  for (size_t i = 0; i < spec.supports.size(); ++i) {
-    const SupportSpec& sp = spec.supports[i];
-    const double s = std::clamp(sp.s, 0.0, L);
-    model.supports.push_back(MakeRodSupport(sp, s, node_at(s)));
-  }
-  model.anchor_support = 0;
-  for (size_t i = 0; i < model.supports.size(); ++i)
-    if (!model.supports[i].sliding) {
-      model.anchor_support = static_cast<int>(i);
-      break;
-    }
-  if (model.supports[model.anchor_support].sliding)
-    throw InvalidInput("every support slides: nothing fixes the cable's position along itself");
-  model.anchor_node = model.supports[model.anchor_support].node;
-  for (size_t i = 0; i < model.supports.size(); ++i) {
-    if (static_cast<int>(i) == model.anchor_support) continue;
-    RodSupport& rs = model.supports[i];
-    rs.constraint_row = model.num_constraints;
-    rs.constraint_rows = rs.sliding ? 2 : 3;
-    model.num_constraints += rs.constraint_rows;
-  }
-
-  // Items: support frames are inserted at their node, between the neighbouring elements.
-  auto add_support_items_at_node = [&](int node) {
-    for (size_t i = 0; i < model.supports.size(); ++i) {
-      RodSupport& rs = model.supports[i];
-      if (rs.node != node || rs.kind == SupportKind::kPin) continue;
-      const RodItem it = MakeSupportItem(spec.supports[i], static_cast<int>(i), rs.s,
-                                         k_material.diagonal().maxCoeff() / L);
-      rs.item = static_cast<int>(model.items.size());
-      model.items.push_back(it);
-    }
-  };
-  model.element_item.resize(ne);
-  for (int e = 0; e < ne; ++e) {
-    add_support_items_at_node(e);
-    RodItem it;
-    it.element = e;
-    it.length = model.element_length[e];
-    it.s = 0.5 * (nodes[e] + nodes[e + 1]);
-    model.element_item[e] = static_cast<int>(model.items.size());
-    model.items.push_back(it);
-  }
-  add_support_items_at_node(ne);
-
-  // Edges with cell-averaged natural curvature.
-  for (size_t a = 0; a + 1 < model.items.size(); ++a) {
-    RodEdge edge;
-    edge.a = static_cast<int>(a);
-    edge.b = static_cast<int>(a + 1);
-    const RodItem& ia = model.items[a];
-    const RodItem& ib = model.items[a + 1];
-    edge.ds = ib.s - ia.s;
-    CABLEFIT_CHECK(edge.ds > 0, "frame samples must advance along the cable");
-    edge.s = 0.5 * (ia.s + ib.s);
-    edge.stiffness = k_material;
-    edge.natural = AverageNaturalCurvature(spec.natural_curvature, ia.s, ib.s);
-    model.edges.push_back(edge);
-  }
-
-  // Lumped node masses, dead loads, and their per-element potential coefficients.
-  const double rho = spec.material.linear_density;
-  model.node_mass = Eigen::VectorXd::Zero(ne + 1);
-  for (int e = 0; e < ne; ++e) {
-    model.node_mass[e] += 0.5 * rho * model.element_length[e];
-    model.node_mass[e + 1] += 0.5 * rho * model.element_length[e];
-  }
-  std::vector<Vec3> node_force(ne + 1);
-  for (int i = 0; i <= ne; ++i) node_force[i] = model.node_mass[i] * spec.gravity;
-  double load_sum = 0.0;
-  for (const PointLoadSpec& pl : spec.point_loads) {
-    const int n = node_at(std::clamp(pl.s, 0.0, L));
-    node_force[n] += pl.force;
-    model.node_loads.emplace_back(n, pl.force);
-    load_sum += pl.force.norm();
-  }
-  model.element_nodes.resize(ne);
-  for (int e = 0; e < ne; ++e) model.element_nodes[e] = {e, e + 1};
-  BuildNodeTree(&model);
-  BuildItemTree(&model);
-  model.element_axial_stiffness = Eigen::VectorXd::Constant(ne, spec.material.axial_stiffness);
-  AssignConstraintReferences(&model);
-  ComputeLoadCoefficients(node_force, &model);
-  model.force_scale = std::max({rho * spec.gravity.norm() * L, load_sum,
-                                spec.material.bending_stiffness / (L * L)});
-  return model;
+  ModelBranch branch;
+  branch.spec = &spec;
+  branch.node_s = BranchNodeArcLengths(spec, disc);
+  return CompileModelLayout({branch}, {}, spec.gravity, spec.name).model;
 }
 
 }  // namespace cablefit

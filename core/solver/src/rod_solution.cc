@@ -24,7 +24,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   }
   // External node forces: lumped weight, point loads, and support reactions (-lambda).
   std::vector<Vec3> node_force(ne + 1);
-  const Vec3 g = state.load_factor * model.spec.gravity;
+  const Vec3 g = state.load_factor * model.gravity;
   for (int i = 0; i <= ne; ++i) node_force[i] = model.node_mass[i] * g;
   for (const auto& [node, f] : model.node_loads) node_force[node] += state.load_factor * f;
   sol.reactions.resize(model.supports.size());

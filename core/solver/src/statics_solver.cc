@@ -21,6 +21,53 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Line search (Nocedal & Wright, "Numerical Optimization", 2nd ed., Alg. 3.1 and sec. 15.4).
+// Sufficient decrease: the textbook Armijo constant; small so that a Newton step near the
+// solution, whose decrease is about half the model's, is never rejected.
+constexpr double kArmijoDecrease = 1e-4;
+// Step halvings before a line search gives up: 2^-40 ~ 1e-12 of the Newton step is below what
+// changes a double-precision frame, so further halving cannot find a better point.
+constexpr int kMaxBacktracks = 40;
+// Merit changes within this fraction of its value are round-off, not an increase.
+constexpr double kMeritRoundOff = 1e-14;
+// A full step that at least halves the KKT residual is accepted even if the merit rejects it
+// (Maratos effect): Newton's local quadratic convergence cuts it by far more than that.
+constexpr double kMaratosResidualReduction = 0.5;
+// The exact-penalty weight must exceed |lambda|_inf (N&W Thm 17.3); the margin keeps it above
+// the multipliers of the next iterations, the floor keeps it positive with no load on a row.
+constexpr double kPenaltyMargin = 1.5;
+constexpr double kPenaltyFloor = 1e-12;  // times force_scale [N]
+
+// Inertia correction (N&W sec. 3.4, "modified Newton"): the first shift is at round-off level of
+// the Hessian's scale so a barely indefinite Hessian is barely changed; each retry multiplies
+// it by ten, and a shift beyond 1e6 x the scale means the step would be steepest descent with
+// a vanishing length: the set-up is singular, not merely non-convex.
+constexpr double kFirstHessianShift = 1e-8;  // times the Hessian's scale
+constexpr double kHessianShiftGrowth = 10.0;
+constexpr double kMaxHessianShift = 1e6;     // times the Hessian's scale
+
+// Relative size below which a number is round-off in double precision (pivots of the Schur
+// complement, the converged gradient against the stiffest frame's Hessian entry).
+constexpr double kRoundOff = 1e-12;
+// A Newton step shorter than this [rad] cannot change a double-precision unit quaternion.
+constexpr double kStepRoundOff = 1e-15;
+
+// Continuation in the support poses (and loads): the first step goes a quarter of the way, a
+// step that converged within kEasyStepIterations Newton iterations lets the next one grow by
+// kStepGrowth up to kMaxStep, a failed one is halved; below kMinStep it is stalled (the
+// path has a fold there that a smaller step does not pass either).
+constexpr double kFirstContinuationStep = 0.25;
+constexpr double kMaxContinuationStep = 0.5;
+constexpr double kMinContinuationStep = 1e-4;
+constexpr double kContinuationStepGrowth = 1.5;
+constexpr int kEasyStepIterations = 6;
+
+// Leaving a saddle: kicks of growing size [rad per frame]. The smallest stays within the basin
+// of a nearby stable state, the largest is still small enough to keep the cable's shape class;
+// a fixed seed keeps every run reproducible.
+constexpr double kEscapeKicks[] = {0.01, 0.03, 0.1};
+constexpr unsigned kEscapeSeed = 12345;
+
 struct Evaluation {
   double energy = 0.0;
   Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
@@ -163,7 +210,7 @@ KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& 
     int pos = 0;
     bool rank_deficient = ldlt_s.info() != Eigen::Success;
     for (int k = 0; k < m && !rank_deficient; ++k) {
-      if (std::abs(d[k]) <= 1e-12 * scale) rank_deficient = true;
+      if (std::abs(d[k]) <= kRoundOff * scale) rank_deficient = true;
       if (d[k] > 0) ++pos;
     }
     if (!rank_deficient) {
@@ -178,7 +225,7 @@ KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& 
       const double escale = std::max(1e-300, ev_s.cwiseAbs().maxCoeff());
       pos = 0;
       for (int k = 0; k < m; ++k) {
-        if (std::abs(ev_s[k]) <= 1e-12 * escale) ev_s[k] = 1e-12 * escale;
+        if (std::abs(ev_s[k]) <= kRoundOff * escale) ev_s[k] = kRoundOff * escale;
         if (ev_s[k] > 0) ++pos;
       }
       out.lambda = eig.eigenvectors() *
@@ -291,7 +338,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   const auto t0 = Clock::now();
   StaticsSummary sum;
   const std::vector<char> free = FreeMask(model);
-  const double L = model.spec.length;
+  const double L = model.length;
   const double gtol = options.gradient_tolerance * model.force_scale * L;
   const double ctol = options.constraint_tolerance * L;
   if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
@@ -320,7 +367,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     sum.iterations = iter;
     // Round-off floor: a gradient below 1e-12 of the stiffest frame's Hessian entry is as
     // converged as double precision allows (fine discretisations of stiff cables reach it first).
-    const double gtol_eff = std::max(gtol, 1e-12 * HessianScale(ev.hessian));
+    const double gtol_eff = std::max(gtol, kRoundOff * HessianScale(ev.hessian));
     if (sum.gradient_norm <= gtol_eff && sum.constraint_norm <= ctol) {
       sum.termination = TerminationType::kConverged;
       break;
@@ -339,8 +386,8 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
       CheckDeadline();
       kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
       if (kkt.ok && kkt.negative_directions == 0) break;
-      mu = mu == 0.0 ? 1e-8 * scale : 10.0 * mu;
-      if (mu > 1e6 * scale) {
+      mu = mu == 0.0 ? kFirstHessianShift * scale : kHessianShiftGrowth * mu;
+      if (mu > kMaxHessianShift * scale) {
         kkt.ok = false;
         break;
       }
@@ -357,13 +404,14 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     Eigen::VectorXd step = kkt.step;
     if (max_rot > options.max_step_rotation) step *= options.max_step_rotation / max_rot;
     const double step_norm = step.lpNorm<Eigen::Infinity>();
-    if (step_norm < 1e-15 && sum.constraint_norm <= ctol) {
+    if (step_norm < kStepRoundOff && sum.constraint_norm <= ctol) {
       sum.termination = TerminationType::kConverged;
       sum.message = "step below round-off";
       break;
     }
-    nu = std::max(nu, 1.5 * (kkt.lambda.size() ? kkt.lambda.lpNorm<Eigen::Infinity>() : 0.0) +
-                          1e-12 * model.force_scale);
+    nu = std::max(nu, kPenaltyMargin *
+                              (kkt.lambda.size() ? kkt.lambda.lpNorm<Eigen::Infinity>() : 0.0) +
+                          kPenaltyFloor * model.force_scale);
     double rigid_c1 = 0.0, compliant_slope = 0.0;
     if (ev.c.size()) {
       const Eigen::VectorXd jac_step = ev.jac * step;
@@ -381,11 +429,12 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     const double kkt0 = std::max(sum.gradient_norm / gtol, sum.constraint_norm / ctol);
     double alpha = 1.0;
     bool accepted = false;
-    for (int ls = 0; ls < 40; ++ls, alpha *= 0.5) {
+    for (int ls = 0; ls < kMaxBacktracks; ++ls, alpha *= 0.5) {
       *state = start;
       ApplyStep(model, step, alpha, state);
       const double phi = Merit(model, *state, nu, free, compliance);
-      if (phi <= phi0 + 1e-4 * alpha * std::min(slope, 0.0) + 1e-14 * std::abs(phi0)) {
+      if (phi <= phi0 + kArmijoDecrease * alpha * std::min(slope, 0.0) +
+                     kMeritRoundOff * std::abs(phi0)) {
         accepted = true;
         break;
       }
@@ -404,7 +453,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
                  ? ConstraintResidual(trial.c, compliance, kkt.lambda).lpNorm<Eigen::Infinity>()
                  : 0.0) /
                 ctol);
-        if (kkt1 < 0.5 * kkt0) {
+        if (kkt1 < kMaratosResidualReduction * kkt0) {
           accepted = true;
           break;
         }
@@ -500,10 +549,10 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
   if (!options.escape_unstable || !sum.converged() || sum.stable) return sum;
   // A saddle: small deterministic pseudo-random rotations break the symmetry that held the
   // solver there; the line search then only goes downhill, towards a stable state.
-  std::mt19937 rng(12345);
+  std::mt19937 rng(kEscapeSeed);
   std::normal_distribution<double> nd(0.0, 1.0);
   const std::vector<char> free = FreeMask(model);
-  for (double amplitude : {0.01, 0.03, 0.1}) {
+  for (double amplitude : kEscapeKicks) {
     RodState trial = *state;
     Eigen::VectorXd kick(3 * model.items.size());
     for (int k = 0; k < kick.size(); ++k) kick[k] = free[k] ? amplitude * nd(rng) : 0.0;
@@ -538,11 +587,11 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
   }
   // Continuation from the start state's own poses (and, if asked, from zero load).
   RodState cur = start;
-  double t = 0.0, dt = 0.25;
+  double t = 0.0, dt = kFirstContinuationStep;
   int steps = 0;
   bool at_start = true;
   while (true) {
-    if (steps >= options.max_continuation_steps || dt < 1e-4) {
+    if (steps >= options.max_continuation_steps || dt < kMinContinuationStep) {
       sum.termination = TerminationType::kNoConvergence;
       sum.message = "continuation stalled at t=" + std::to_string(t);
       break;
@@ -569,7 +618,8 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
         *state = cur;
         break;
       }
-      if (step.iterations <= 6) dt = std::min(0.5, dt * 1.5);
+      if (step.iterations <= kEasyStepIterations)
+        dt = std::min(kMaxContinuationStep, dt * kContinuationStepGrowth);
     } else {
       if (at_start) {
         sum = step;

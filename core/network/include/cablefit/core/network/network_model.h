@@ -1,5 +1,6 @@
 // A rod network compiled into one RodModel (so one Newton system and one stability verdict for
-// the whole harness), plus the bookkeeping that maps it back to branches and junctions.
+// the whole harness), plus the bookkeeping that maps it back to branches and junctions. It is
+// laid out by the same compiler as a single rod (internal/model_compiler.h).
 //
 // How junctions are modelled (why): a breakout with three or more branches is a rigid body
 // carrying its own frame sample (an item of zero length) at the shared node; every branch end is
@@ -13,25 +14,10 @@
 #include <vector>
 
 #include "cablefit/core/network/network_spec.h"
+#include "cablefit/core/rod/internal/model_compiler.h"
 #include "cablefit/core/rod/rod_model.h"
 
 namespace cablefit {
-
-struct BranchLayout {
-  std::vector<int> nodes;     // model nodes in order of increasing s (ends may be junction nodes)
-  std::vector<int> elements;  // model elements in order of increasing s
-  Eigen::VectorXd node_s;     // nodes.size() [m] arc length along the branch
-  std::vector<int> supports;  // model support index of each spec support of the branch
-  int first_item = -1, last_item = -1;  // items at the two ends (tied to junctions)
-};
-
-struct JunctionLayout {
-  int node = -1;
-  int item = -1;               // the breakout's frame sample, -1 for a two-branch splice
-  std::vector<int> branches;   // attached branches
-  std::vector<int> branch_end;  // 0: the branch's start is attached, 1: its end
-  std::vector<int> edges;      // per attached branch: its edge to the junction frame (-1 for a splice)
-};
 
 struct NetworkModel {
   NetworkSpec spec;

@@ -1,6 +1,7 @@
 // The immutable, compiled rod: discretisation, stiffness, loads and supports of one set-up at one
-// resolution. Built once from a RodSpec by CompileRodModel() (which validates the spec); the
-// solver only reads it (MuJoCo's mjModel / mjData split: what changes lives in RodState).
+// resolution. Built once from a RodSpec by CompileRodModel() (which validates the spec) or from
+// a network by CompileNetworkModel(), both laid out by one compiler (internal/model_compiler.h);
+// the solver only reads it (MuJoCo's mjModel / mjData split: what changes lives in RodState).
 //
 // Discretisation (why this one): a quaternion Cosserat/Kirchhoff rod on a staggered grid
 // (Lang, Linn & Arnold 2011, "Multi-body dynamics simulation of geometrically exact Cosserat
@@ -79,7 +80,9 @@ struct RodSupport {
 };
 
 struct RodModel {
-  RodSpec spec;  // the validated input
+  std::string name;
+  double length = 0.0;               // [m] of the cable, of all branches on a network
+  Vec3 gravity = Vec3(0, 0, -9.81);  // [m/s^2]
   int num_elements = 0;
   Eigen::VectorXd node_s;         // (num_elements + 1) [m]
   Eigen::VectorXd element_length;  // num_elements [m]

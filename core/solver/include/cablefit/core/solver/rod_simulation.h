@@ -1,13 +1,13 @@
 // Solving a set-up to a requested accuracy: the statics solver at a sequence of uniformly
 // refined discretisations (each warm-started from the previous), Richardson extrapolation of
-// the second-order error (u(h) = u + C h^2 + O(h^4)), and an error estimate from successive
-// extrapolations. A simulator keeps its levels so that a slightly changed set-up (what a fit
+// the second-order error and its error estimate (richardson.h). A simulator keeps its levels so that a slightly changed set-up (what a fit
 // does thousands of times) is re-solved warm at the same resolution.
 #pragma once
 
 #include <vector>
 
 #include "cablefit/core/rod/rod_model.h"
+#include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/core/solver/rod_solution.h"
 #include "cablefit/core/rod/rod_state.h"
 #include "cablefit/core/solver/statics_solver.h"
@@ -32,7 +32,9 @@ struct SimulationResult {
   /// The finest level's full solution (frames, internal forces, summary) with its centreline
   /// and support reactions replaced by the extrapolated ones.
   RodSolution solution;
-  double estimated_error = 0.0;    // [m] estimated max position error of solution.centerline
+  /// [m] estimated max position error of solution.centerline, at its nodes and between them
+  /// (as SampleCenterline reads it); infinite with one level or when a level failed.
+  double estimated_error = 0.0;
   std::vector<int> level_elements;  // elements per level solved
   int newton_iterations = 0;        // over all levels
   double seconds = 0.0;
@@ -65,11 +67,5 @@ class RodSimulator {
   std::vector<int> span_elements_;
   double coarse_h_ = 0.0;
 };
-
-/// Samples an extrapolated node centreline at arc lengths `s` by local cubic interpolation.
-Polyline SampleCenterline(const Polyline& nodes, const Eigen::VectorXd& s);
-
-/// n uniformly spaced arc lengths from 0 to length.
-Eigen::VectorXd UniformArcLengths(double length, int n);
 
 }  // namespace cablefit

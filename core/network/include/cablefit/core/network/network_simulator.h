@@ -1,0 +1,33 @@
+// A network solved to a requested accuracy the way a single rod is (RodSimulator): SolveNetwork
+// at uniformly refined levels, driven by the shared refinement loop (refinement.h), with the
+// branches' centrelines Richardson-extrapolated and the same error estimate.
+#pragma once
+
+#include <vector>
+
+#include "cablefit/core/network/network_simulation.h"
+#include "cablefit/core/solver/refinement.h"
+
+namespace cablefit {
+
+struct NetworkSimulation {
+  /// The finest level solved, as solved (loads, contacts, junctions, summary: the failing
+  /// level's when one failed).
+  NetworkSolution finest;
+  /// Per branch: the extrapolated node centreline at the finest level's nodes (the finest
+  /// level's own when fewer than two levels converged).
+  std::vector<Polyline> centerlines;
+  double estimated_error = 0.0;     // [m] see RichardsonLevels::EstimatedError
+  std::vector<int> level_elements;  // elements per level solved
+  int newton_iterations = 0;        // over all levels
+  bool converged = false;           // every level converged
+  bool accuracy_met = false;
+  double seconds = 0.0;
+};
+
+/// Solves `spec` at levels of `options.element_length` x 2^-level (options.refinement is
+/// ignored) as `plan` says. Throws InvalidInput for an invalid spec.
+NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan& plan,
+                                  const NetworkOptions& options = {});
+
+}  // namespace cablefit

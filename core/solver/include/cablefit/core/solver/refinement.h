@@ -1,0 +1,44 @@
+// The refinement loop every simulation runs, single rod or network: solve level 0, 1, ...
+// (each halving every element of the one before, warm-started from it by the caller) until the
+// Richardson extrapolation's estimated error meets the requested accuracy. One place decides
+// how many levels a set-up gets, so rods and networks are judged by the same estimate.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/solver/richardson.h"
+#include "cablefit/core/solver/statics_solver.h"
+
+namespace cablefit {
+
+/// What one level's solve hands the loop.
+struct LevelSolution {
+  std::vector<Polyline> branches;  // node centrelines, one per branch (s [m], 3 x n [m])
+  StaticsSummary summary;
+};
+
+struct RefinementPlan {
+  double accuracy = 1e-6;  // [m] requested estimated max position error
+  int min_levels = 3;      // solved even when the estimate is met earlier
+  int max_levels = 7;      // never more
+};
+
+struct RefinedSolution {
+  RichardsonLevels levels;                 // centrelines of every converged level
+  std::vector<StaticsSummary> summaries;   // of every level solved; only the last can have failed
+  bool converged = false;                  // every level solved converged
+  /// [m] RichardsonLevels::EstimatedError of the converged levels (infinite with fewer than
+  /// two, or when a level failed).
+  double estimated_error = 0.0;
+  bool accuracy_met = false;               // converged and estimated_error <= accuracy
+  int newton_iterations = 0;               // over all levels
+};
+
+/// Calls solve_level(0), solve_level(1), ... until a level fails, or `plan.min_levels` are solved
+/// and the estimate meets `plan.accuracy`, or `plan.max_levels` are solved.
+RefinedSolution SolveRefined(const RefinementPlan& plan,
+                             const std::function<LevelSolution(int level)>& solve_level);
+
+}  // namespace cablefit
