@@ -3,7 +3,9 @@
 #include <exception>
 
 #include "cablefit/cli/commands.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/solver_failure.h"
 #include "terminal_text.h"
 
 namespace cablefit::addin {
@@ -32,8 +34,18 @@ int RunCommandLine(int argc, char** argv) {
     // Typed user-input errors arrive here as one line "<file>: <problem>".
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     return kExitUsage;
-  } catch (const std::exception& e) {
+  } catch (const Cancelled& e) {
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
+    return kExitSomeFailed;
+  } catch (const SolverFailure& e) {
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
+    return kExitSomeFailed;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "cablefit: internal error: %s\n", TerminalSafe(e.what()).c_str());
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    // Anything else (an unreadable output folder, out of memory) is still one line.
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(OneLine(e.what())).c_str());
     return kExitUsage;
   }
   return exit_code;

@@ -22,7 +22,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/solver_failure.h"
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "curve_projection.h"
@@ -202,7 +204,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   if (!recorded.points.allFinite()) throw InvalidInput("the recording has non-finite points");
   const double L = nominal.length;
   auto progress = [&](double f, const char* stage) {
-    if (options.progress && !options.progress(f, stage)) throw InvalidInput("cancelled");
+    ReportProgress(options.progress, f, stage);
   };
   ShapeDiagnosis out;
 
@@ -302,7 +304,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   RodSimulator base(fit_opt);
   const SimulationResult nominal_fit_solution = base.Simulate(nominal, &initial);
   if (!nominal_fit_solution.converged)
-    throw InvalidInput("the nominal set-up could not be solved from the recorded shape: " +
+    throw SolverFailure("the nominal set-up could not be solved from the recorded shape: " +
                        nominal_fit_solution.solution.summary.message);
   // Other equilibria of the nominal. A cable that sags little, or hangs near a fold, can rest in
   // another equilibrium than the one the recorded shape leads the solver to (an effect can tip
@@ -360,7 +362,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   double best_cost = INFINITY;
   for (size_t i = 0; i < fits.size(); ++i)
     if (fits[i].ok) best_cost = std::min(best_cost, fits[i].cost);
-  if (!std::isfinite(best_cost)) throw InvalidInput("no model could be fitted to the recording");
+  if (!std::isfinite(best_cost)) throw SolverFailure("no model could be fitted to the recording");
   const int dof = 2 * n;  // a point's offset from the curve has two free components
   const double noise2 = obs.noise_sigma * obs.noise_sigma;
   double sigma2 = 2.0 * best_cost / std::max(1, dof - 6);
@@ -377,7 +379,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     auto it = best_of.find(models[i].effect);
     if (it == best_of.end() || bic(i) < bic(it->second)) best_of[models[i].effect] = i;
   }
-  if (!best_of.count("none")) throw InvalidInput("the nominal set-up could not be re-solved");
+  if (!best_of.count("none")) throw SolverFailure("the nominal set-up could not be re-solved");
   // The margin an effect must win by is prior odds for `none`: scores, order and choice all
   // include it, so the reported effect is always the best-scored candidate.
   auto criterion = [&](size_t i) {

@@ -8,8 +8,10 @@ class App;
 
 namespace cablefit::addin {
 
-/// Exit statuses of cli-v1: 0 all done, 1 some inputs failed, 2 usage error / nothing read.
-enum ExitCode { kExitOk = 0, kExitSomeFailed = 1, kExitUsage = 2 };
+/// Exit statuses of cli-v1: 0 all done, 1 some inputs failed (or were cancelled / timed out),
+/// 2 usage error / nothing read; added: 3 internal error (cablefit broke a precondition of its
+/// own API: a bug to report, not a problem of the input).
+enum ExitCode { kExitOk = 0, kExitSomeFailed = 1, kExitUsage = 2, kExitInternal = 3 };
 
 void RegisterSimulateCommand(CLI::App& app, int* exit_code);
 void RegisterBenchCommand(CLI::App& app, int* exit_code);
