@@ -95,17 +95,21 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   addin::RelaxedFile& f = state->file;
   f.input = input;
   f.stem = fs::path(input).stem().string();
-  // One cancellation scope for the run: a progress call returning false trips it (here or in
-  // the solver's continuation steps), and every group after that fails with "cancelled".
-  const CancellationScope run;
-  auto report = [&](double fraction, const std::string& stage) {
-    if (progress && !progress(fraction, stage)) RequestCancellation();
-  };
-  report(0.0, "read " + fs::path(input).filename().string());
+  // A cancel while reading takes effect once the drawing is read (its cables are listed, each
+  // failing with "cancelled"): reading itself checks the cancellation scope.
+  const bool cancel_at_read =
+      progress && !progress(0.0, "read " + fs::path(input).filename().string());
   auto t0 = Clock::now();
   f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
   f.read_ok = true;
   f.times.read = Since(t0);
+  // One cancellation scope for the solves: a progress call returning false trips it (here or in
+  // the solver's continuation steps), and every group after that fails with "cancelled".
+  const CancellationScope run;
+  if (cancel_at_read) RequestCancellation();
+  auto report = [&](double fraction, const std::string& stage) {
+    if (progress && !progress(fraction, stage)) RequestCancellation();
+  };
   const size_t n = f.drawing.cables.size();
   f.cables.resize(n);
   f.cable_errors.resize(n);
