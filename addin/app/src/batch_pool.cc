@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <new>
 #include <thread>
 
 namespace cablefit::addin {
@@ -44,8 +45,12 @@ std::string ErrorText(const std::exception_ptr& e) {
     std::rethrow_exception(e);
   } catch (const FileError& fe) {
     return fe.problem();
+  } catch (const UsageError& ex) {
+    return std::string("internal error: ") + ex.what();
+  } catch (const std::bad_alloc&) {
+    return "out of memory";
   } catch (const std::exception& ex) {
-    return ex.what();
+    return OneLine(ex.what());
   } catch (...) {
     return "unknown error";
   }

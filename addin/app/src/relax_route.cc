@@ -83,7 +83,9 @@ Vec3 RouteTangent(const Polyline& route, double s) {
   }
   const Eigen::MatrixXd coeff = a.colPivHouseholderQr().solve(b);  // (degree+1) x 3
   const Vec3 d = coeff.row(1).transpose();
-  CABLEFIT_CHECK(d.norm() > 0, "route tangent vanished");
+  // Drawn points that coincide around s leave no direction: bad geometry, not a bug.
+  if (!(d.norm() > 0))
+    throw InvalidInput("the drawn route has no direction at s = " + MessageNumber(s) + " m");
   return d.normalized();
 }
 

@@ -10,7 +10,7 @@
 
 #include "cablefit/app/batch_pool.h"
 #include "cablefit/cli/commands.h"
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/app/diagnose_case.h"
@@ -52,10 +52,8 @@ std::string ErrorLine(const std::exception_ptr& error, const std::string& file) 
     std::rethrow_exception(error);
   } catch (const FileError& e) {
     return e.what();
-  } catch (const std::exception& e) {
-    return file + ": " + e.what();
   } catch (...) {
-    return file + ": unknown error";
+    return file + ": " + ErrorText(std::current_exception());
   }
 }
 
@@ -105,7 +103,7 @@ int RunDiagnose(const DiagnoseArgs& a) {
       o.row.name = file;
       const auto t0 = std::chrono::steady_clock::now();
       try {
-        const ScopedDeadline deadline(a.timeout);  // the solvers check it (core/deadline.h)
+        const CancellationScope deadline(a.timeout);  // the solvers check it (core/base/cancellation.h)
         DiagnoseCaseOptions options;
         const DiagnosedCase d = DiagnoseCase(file, options, [&](double f, const std::string& s) {
           bar.Update(i, f, std::filesystem::path(file).parent_path().filename().string() + ": " + s);

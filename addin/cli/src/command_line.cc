@@ -5,7 +5,9 @@
 #include <exception>
 
 #include "cablefit/cli/commands.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/solver_failure.h"
 #include "terminal_text.h"
 
 namespace cablefit::addin {
@@ -51,8 +53,19 @@ int RunCommandLine(int argc, char** argv) {
     // Typed user-input errors arrive here as one line "<file>: <problem>".
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
     return kExitUsage;
-  } catch (const std::exception& e) {
+  } catch (const Cancelled& e) {
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
+    return kExitSomeFailed;
+  } catch (const SolverFailure& e) {
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
+    return kExitSomeFailed;
+  } catch (const UsageError& e) {
+    // cli-v1 has no code of its own for our bugs: the work failed (1), the input was not at fault.
+    std::fprintf(stderr, "cablefit: internal error: %s\n", TerminalSafe(e.what()).c_str());
+    return kExitSomeFailed;
+  } catch (const std::exception& e) {
+    // Anything else (an unreadable output folder, out of memory) is still one line.
+    std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(OneLine(e.what())).c_str());
     return kExitUsage;
   }
   return CheckStandardOutput(app, exit_code);

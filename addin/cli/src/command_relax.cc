@@ -14,7 +14,7 @@
 
 #include "cablefit/app/batch_pool.h"
 #include "cablefit/cli/commands.h"
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/app/harness_config.h"
 #include "option_checks.h"
@@ -219,7 +219,7 @@ int RunRelax(const RelaxArgs& a) {
     bar.Update(n + job.file, static_cast<double>(job.group.cables.front()) / f.drawing.cables.size(),
                f.stem + ": relax " + label);
     const auto t0 = Clock::now();
-    const ScopedDeadline deadline(a.timeout);  // the solver checks it (core/deadline.h)
+    const CancellationScope deadline(a.timeout);  // the solver checks it (core/base/cancellation.h)
     GroupOutcome g = RelaxGroupCables(f.drawing, job.group, boxes[static_cast<size_t>(job.file)],
                                       config, sim_options);
     const std::string& problem = g.problem;

@@ -7,7 +7,7 @@
 #include <exception>
 #include <filesystem>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/colour_map.h"
 #include "cablefit/app/diagnose_case.h"
@@ -95,11 +95,21 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   addin::RelaxedFile& f = state->file;
   f.input = input;
   f.stem = fs::path(input).stem().string();
-  bool cancelled = progress && !progress(0.0, "read " + fs::path(input).filename().string());
+  // A cancel while reading takes effect once the drawing is read (its cables are listed, each
+  // failing with "cancelled"): reading itself checks the cancellation scope.
+  const bool cancel_at_read =
+      progress && !progress(0.0, "read " + fs::path(input).filename().string());
   auto t0 = Clock::now();
   f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
   f.read_ok = true;
   f.times.read = Since(t0);
+  // One cancellation scope for the solves: a progress call returning false trips it (here or in
+  // the solver's continuation steps), and every group after that fails with "cancelled".
+  const CancellationScope run;
+  if (cancel_at_read) RequestCancellation();
+  auto report = [&](double fraction, const std::string& stage) {
+    if (progress && !progress(fraction, stage)) RequestCancellation();
+  };
   const size_t n = f.drawing.cables.size();
   f.cables.resize(n);
   f.cable_errors.resize(n);
@@ -112,23 +122,22 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   for (size_t g = 0; g < groups.size(); ++g) {
     const addin::RelaxGroup& group = groups[g];
     const std::string label = addin::GroupLabel(f.drawing, group);
-    // Continuation steps report inside the group's share of the bar and may cancel too.
+    // Continuation steps report inside the group's share of the bar.
     options.statics.progress = [&](double fraction, const std::string& stage) {
-      if (!progress) return true;
-      cancelled = cancelled || !progress((g + 0.1 + 0.8 * fraction) / ng, label + ": " + stage);
-      return !cancelled;
+      return !progress || progress((g + 0.1 + 0.8 * fraction) / ng, label + ": " + stage);
     };
-    if (!cancelled && progress) cancelled = !progress((g + 0.05) / ng, "relax " + label);
-    std::string problem = cancelled ? "cancelled" : "";
+    if (!CancellationRequested()) report((g + 0.05) / ng, "relax " + label);
+    std::string problem;
     std::vector<addin::CableRelaxation> done;
     t0 = Clock::now();
-    if (problem.empty()) {
-      const ScopedDeadline deadline(timeout);  // the solvers check it (core/deadline.h)
+    if (!CancellationRequested()) {
+      const CancellationScope item(timeout);  // the solvers check it
       addin::GroupOutcome r = addin::RelaxGroupCables(f.drawing, group, boxes, config, options);
-      problem = cancelled ? "cancelled" : r.problem;
+      problem = r.problem;
       done = std::move(r.cables);
       if (!r.network.is_null()) f.networks.push_back(std::move(r.network));
     }
+    if (CancellationRequested()) problem = "cancelled";
     if (problem.empty()) {
       for (addin::CableRelaxation& r : done) {
         const size_t c = static_cast<size_t>(r.setup.cable);
@@ -139,7 +148,7 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
     }
     f.times.relax += Since(t0);
   }
-  if (progress) progress(1.0, cancelled ? "cancelled" : "relaxed");
+  if (progress) progress(1.0, CancellationRequested() ? "cancelled" : "relaxed");
 
   HarnessRelaxation out;
   out.file_ = state;

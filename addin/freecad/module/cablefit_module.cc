@@ -8,7 +8,9 @@
 
 #include <optional>
 
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/solver_failure.h"
 #include "cablefit_facade.h"
 
 namespace py = pybind11;
@@ -58,11 +60,19 @@ class PythonProgress {
 PYBIND11_MODULE(cablefit_native, m) {
   m.doc() = "cablefit relax and diagnose for the FreeCAD workbench (lengths in metres)";
   static py::exception<cablefit::InvalidInput> error(m, "Error", PyExc_ValueError);
+  // A stopped run (progress returned False, or a time limit) is not bad input: its own type.
+  static py::exception<cablefit::Cancelled> cancelled(m, "Cancelled", PyExc_RuntimeError);
+  static py::exception<cablefit::SolverFailure> solver_failure(m, "SolverFailure",
+                                                               PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const cablefit::InvalidInput& e) {
       error(e.what());  // FileError's what() already names the file
+    } catch (const cablefit::Cancelled& e) {
+      cancelled(e.what());
+    } catch (const cablefit::SolverFailure& e) {
+      solver_failure(e.what());
     }
   });
 
@@ -160,7 +170,7 @@ PYBIND11_MODULE(cablefit_native, m) {
               cablefit::freecad::DiagnoseRecording(case_file, report_dir, p.Callback());
           p.RethrowIfFailed();
           return d;
-        } catch (const cablefit::InvalidInput&) {
+        } catch (const cablefit::Cancelled&) {
           p.RethrowIfFailed();  // a cancel from Python surfaces as the Python error
           throw;
         }

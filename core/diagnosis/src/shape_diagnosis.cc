@@ -17,7 +17,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/solver_failure.h"
 #include "effect_fit.h"
 #include "model_selection.h"
 #include "shape_effects.h"
@@ -93,11 +95,11 @@ class Selection {
         noise_sigma_(noise_sigma),
         min_bic_gain_(min_bic_gain) {
     const internal::ModelRanking first = Rank({});
-    if (first.ranked.empty()) throw InvalidInput("no model could be fitted to the recording");
+    if (first.ranked.empty()) throw SolverFailure("no model could be fitted to the recording");
     const auto none = std::find_if(first.ranked.begin(), first.ranked.end(), [&](auto& r) {
       return models[r.fit].effect == ShapeEffect::kNone;
     });
-    if (none == first.ranked.end()) throw InvalidInput("the nominal set-up could not be re-solved");
+    if (none == first.ranked.end()) throw SolverFailure("the nominal set-up could not be re-solved");
     none_index_ = none->fit;
   }
   internal::ModelRanking Rank(const std::vector<bool>& rejected) const {
@@ -173,7 +175,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   if (!options.IsValid(&why)) throw InvalidInput("diagnosis options: " + why);
   ValidateRodSpec(nominal);
   auto progress = [&](double f, const char* stage) {
-    if (options.progress && !options.progress(f, stage)) throw InvalidInput("cancelled");
+    ReportProgress(options.progress, f, stage);
   };
   ShapeDiagnosis out;
 

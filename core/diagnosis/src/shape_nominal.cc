@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "cablefit/core/base/solver_failure.h"
 #include "cablefit/core/base/errors.h"
 
 namespace cablefit {
@@ -21,7 +22,7 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
   RodSimulator base(fit_opt);
   const SimulationResult nominal_fit_solution = base.Simulate(nominal, &initial);
   if (!nominal_fit_solution.converged)
-    throw InvalidInput("the nominal set-up could not be solved from the recorded shape: " +
+    throw SolverFailure("the nominal set-up could not be solved from the recorded shape: " +
                        nominal_fit_solution.solution.summary.message);
   NominalBranches out;
   for (const auto& re : nominal_fit_solution.solution.reactions)

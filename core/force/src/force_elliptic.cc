@@ -1,4 +1,7 @@
-// AGM evaluation of K(k), E(k): Abramowitz & Stegun 17.6.1-17.6.4.
+// AGM evaluation of K(k), E(k): Abramowitz & Stegun 17.6.1-17.6.4. Kept instead of
+// std::comp_ellint_1/2: against a quad-precision AGM over 1e5 moduli in [0, 1) (half of them in
+// 1 - 1e-1 .. 1 - 1e-16) libstdc++'s version loses accuracy as k -> 1 (largest relative error
+// 1.8e-10 in K, 2.4e-12 in E; this AGM 5.3e-16 and 5.3e-15) and takes about 3x as long.
 #include "cablefit/core/force/force_elliptic.h"
 
 #include <cmath>

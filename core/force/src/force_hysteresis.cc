@@ -10,7 +10,7 @@ namespace cablefit {
 
 Eigen::VectorXd UnitJenkinsResponse(double slip_displacement, const Eigen::VectorXd& x,
                                     double x_start) {
-  CABLEFIT_CHECK(slip_displacement > 0.0, "Jenkins slip displacement must be positive");
+  CABLEFIT_REQUIRE(slip_displacement > 0.0, "Jenkins slip displacement must be positive");
   Eigen::VectorXd z(x.size());
   double state = 0.0;  // spring force / slip force
   double previous = x_start;
@@ -51,7 +51,7 @@ int FirstCycleEnd(const Eigen::VectorXd& x) {
 }
 
 double FirstCycleLoopArea(const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
-  CABLEFIT_CHECK(x.size() == y.size(), "loop area needs x and y of equal length");
+  CABLEFIT_REQUIRE(x.size() == y.size(), "loop area needs x and y of equal length");
   const int end = FirstCycleEnd(x);
   double twice_area = 0.0;  // shoelace formula
   for (int i = 0; i <= end; ++i) {

@@ -78,9 +78,9 @@ Eigen::VectorXd Nnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
 Eigen::VectorXd SolvePartlyNonNegativeLeastSquares(const Eigen::MatrixXd& A,
                                                    const Eigen::VectorXd& b,
                                                    const std::vector<bool>& nonnegative) {
-  CABLEFIT_CHECK(A.rows() == b.size(), "least squares: A and b row counts differ");
-  CABLEFIT_CHECK(static_cast<size_t>(A.cols()) == nonnegative.size(),
-                 "least squares: one flag per unknown");
+  CABLEFIT_REQUIRE(A.rows() == b.size(), "least squares: A and b row counts differ");
+  CABLEFIT_REQUIRE(static_cast<size_t>(A.cols()) == nonnegative.size(),
+                   "least squares: one flag per unknown");
   // Normalise columns so the NNLS tolerances are scale-free; unscale at the end.
   Eigen::VectorXd scale(A.cols());
   Eigen::MatrixXd An = A;

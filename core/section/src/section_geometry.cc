@@ -78,7 +78,7 @@ double MinimiseConvex(const std::function<double(double)>& f, double lo, double 
 
 void SmallestEnclosingCircle(const std::vector<SectionPart>& parts, Vec2* centre,
                              double* radius) {
-  CABLEFIT_CHECK(!parts.empty(), "enclosing circle of nothing");
+  CABLEFIT_REQUIRE(!parts.empty(), "enclosing circle of nothing");
   Vec2 lo = parts[0].centre, hi = parts[0].centre;  // 2 [m] box of the centres
   for (const SectionPart& p : parts) {
     lo = lo.cwiseMin(p.centre);

@@ -160,8 +160,8 @@ TorsionGridResult SolvePrandtlTorsionOnGrid(const SectionRegion& region, int cel
   const auto start = std::chrono::steady_clock::now();
   Vec2 lo, hi;  // 2 [m] bounding box
   region.Bounds(&lo, &hi);
-  CABLEFIT_CHECK(cells >= 2 && lo.allFinite() && hi.allFinite() && (hi - lo).maxCoeff() > 0.0,
-                 "torsion needs a non-empty region and a grid");
+  CABLEFIT_REQUIRE(cells >= 2 && lo.allFinite() && hi.allFinite() && (hi - lo).maxCoeff() > 0.0,
+                   "torsion needs a non-empty region and a grid");
   const Vec2 mid = 0.5 * (lo + hi);  // 2 [m]
   const double h = (hi - lo).maxCoeff() / cells;
   // Nodes at mid + k h, |k| <= half; two padding nodes keep the outside connected all round.

@@ -88,7 +88,7 @@ SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* ini
 }
 
 SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
-  CABLEFIT_CHECK(!states_.empty(), "Resimulate needs a previous Simulate");
+  CABLEFIT_REQUIRE(!states_.empty(), "Resimulate needs a previous Simulate");
   const auto t0 = Clock::now();
   ValidateRodSpec(spec);
   std::vector<StaticsSummary> summaries;

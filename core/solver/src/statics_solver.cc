@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "cablefit/core/rod/internal/block_tree.h"
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "kkt_ldlt.h"
 #include "cablefit/core/base/internal/quaternion.h"
@@ -317,8 +317,8 @@ const char* ToString(TerminationType t) {
       return "no_convergence";
     case TerminationType::kLineSearchFailure:
       return "line_search_failure";
-    case TerminationType::kCancelled:
-      return "cancelled";
+    case TerminationType::kInvalidOptions:
+      return "invalid_options";
   }
   return "?";
 }
@@ -333,10 +333,25 @@ std::string StaticsSummary::BriefReport() const {
   return os.str();
 }
 
+namespace {
+
+/// Like Ceres' Solve: invalid options are a summary that says why, not an abort or a throw.
+bool RejectInvalidOptions(const StaticsOptions& options, StaticsSummary* sum) {
+  std::string why;
+  if (options.IsValid(&why)) return false;
+  *sum = StaticsSummary{};
+  sum->termination = TerminationType::kInvalidOptions;
+  sum->message = "invalid statics options: " + why;
+  return true;
+}
+
+}  // namespace
+
 StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
                                   const StaticsOptions& options) {
   const auto t0 = Clock::now();
   StaticsSummary sum;
+  if (RejectInvalidOptions(options, &sum)) return sum;
   const std::vector<char> free = FreeMask(model);
   const double L = model.length;
   const double gtol = options.gradient_tolerance * model.force_scale * L;
@@ -349,7 +364,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   double nu = 0.0;
   bool first = true;
   for (int iter = 0;; ++iter) {
-    CheckDeadline();  // a batch item's --timeout
+    CheckCancelled();  // a batch item's --timeout
     Evaluate(model, *state, true, &state->lambda, free, &ev);
     if (first) {
       sum.initial_energy = ev.energy;
@@ -383,7 +398,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     // Inertia correction. A Hessian that is not finite (loads beyond any physical size) has no
     // shift that helps: the loop would never reach its bound, so it fails at once.
     for (double mu = 0.0; std::isfinite(scale);) {
-      CheckDeadline();
+      CheckCancelled();
       kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
       if (kkt.ok && kkt.negative_directions == 0) break;
       mu = mu == 0.0 ? kFirstHessianShift * scale : kHessianShiftGrowth * mu;
@@ -521,8 +536,10 @@ std::string TautStretch(const RodModel& model) {
 }  // namespace
 
 StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options) {
-  StaticsSummary sum = SolveStaticsAndEscape(model, state, options);
-  if (!sum.converged() && sum.termination != TerminationType::kCancelled) {
+  StaticsSummary sum;
+  if (RejectInvalidOptions(options, &sum)) return sum;
+  sum = SolveStaticsAndEscape(model, state, options);
+  if (!sum.converged()) {
     const std::string taut = TautStretch(model);
     if (!taut.empty()) sum.message = taut + "; " + sum.message;
   }
@@ -533,7 +550,7 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
                                      const StaticsOptions& options) {
   const RodState start = *state;
   StaticsSummary sum = SolveStaticsFrom(model, state, options);
-  if (!sum.converged() && !options.ramp_loads && sum.termination != TerminationType::kCancelled) {
+  if (!sum.converged() && !options.ramp_loads) {
     // A start far from any loaded equilibrium (e.g. a default shape under a heavy, anisotropic
     // load): relax it weightless first and bring the loads in by continuation.
     RodState retry = start;
@@ -571,8 +588,6 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
 StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
                                 const StaticsOptions& options) {
   const auto t0 = Clock::now();
-  std::string why;
-  CABLEFIT_CHECK(options.IsValid(&why), why);
   const RodState start = *state;
   RodState direct = start;
   SetSupportTargets(model, 1.0, start, &direct);
@@ -604,11 +619,7 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
     StaticsSummary step = SolveStaticsDirect(model, &trial, options);
     total_iterations += step.iterations;
     ++steps;
-    if (options.progress && !options.progress(t_next, "continuation")) {
-      sum.termination = TerminationType::kCancelled;
-      sum.message = "cancelled";
-      break;
-    }
+    ReportProgress(options.progress, t_next, "continuation");
     if (step.converged()) {
       cur = trial;
       t = t_next;

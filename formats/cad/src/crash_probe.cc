@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <thread>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 
 extern char** environ;
@@ -119,7 +119,7 @@ std::optional<ChildOutcome> RunChildProcess(const std::string& program,
       outcome.timed_out = true;
       return outcome;  // the guard kills and reaps it
     }
-    CheckDeadline();  // throws; the guard kills and reaps the child
+    CheckCancelled();  // throws; the guard kills and reaps the child
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(20000));
   }

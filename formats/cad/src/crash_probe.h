@@ -31,7 +31,7 @@ std::string OcctChildPath();
 /// standard input and output from/to /dev/null, standard error to /dev/null unless
 /// `keep_stderr`. Each `inherit_fds` entry {from, to} makes this process's descriptor `from`
 /// the child's descriptor `to`. Waits at most `max_seconds` (and no longer than the calling
-/// thread's deadline, see cablefit/core/deadline.h: then the child is killed and
+/// thread's deadline, see cablefit/core/base/cancellation.h: then the child is killed and
 /// DeadlineExceeded thrown). std::nullopt when the process cannot be started or is lost.
 std::optional<ChildOutcome> RunChildProcess(const std::string& program,
                                             const std::vector<std::string>& args,

@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "circle_fit.h"
+#include "cablefit/formats/internal/circle_fit.h"
 
 namespace cablefit {
 namespace {

@@ -12,10 +12,8 @@
 #include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
-#include <filesystem>
-#include <unistd.h>
-
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/atomic_file.h"
 #include "occt_session.h"
 
 namespace cablefit {
@@ -64,17 +62,7 @@ TDF_Label AddNamedShape(const Handle(TDocStd_Document)& doc, const TopoDS_Shape&
 void WriteStepAtomically(const Handle(TDocStd_Document)& doc, const std::string& path,
                          const std::string& schema) {
   InitOcctSession();
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  // A hidden sibling, so the rename stays on one file system. Built by appending: GCC 12's
-  // -Wrestrict misfires on "literal" + std::string.
-  std::string temp_name(1, '.');
-  temp_name += target.filename().string();
-  temp_name += ".tmp";
-  temp_name += std::to_string(::getpid());
-  const fs::path temp = target.parent_path() / temp_name;
+  AtomicFile file(path);
   // The schema must be set before the writer is constructed (docs/stack.md, OCCT traps).
   Interface_Static::SetCVal("write.step.schema", schema.c_str());
   Interface_Static::SetCVal("write.step.unit", "MM");
@@ -84,20 +72,12 @@ void WriteStepAtomically(const Handle(TDocStd_Document)& doc, const std::string&
     writer.SetNameMode(true);
     writer.SetColorMode(true);
     ok = writer.Transfer(doc, STEPControl_AsIs) &&
-         writer.Write(temp.string().c_str()) == IFSelect_RetDone;
+         writer.Write(file.temp_path().string().c_str()) == IFSelect_RetDone;
   } catch (const Standard_Failure& e) {
-    fs::remove(temp, ec);
     throw FileError(path, std::string("STEP writer failed: ") + e.GetMessageString());
   }
-  if (!ok) {
-    fs::remove(temp, ec);
-    throw FileError(path, "could not write STEP (directory not writable?)");
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw FileError(path, "could not rename the temporary file into place");
-  }
+  if (!ok) throw FileError(path, "could not write STEP (directory not writable?)");
+  file.Commit();
 }
 
 }  // namespace cablefit

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 
 namespace cablefit {
@@ -47,7 +47,7 @@ std::string ReadInputFile(const std::string& path, std::uint64_t max_bytes, cons
   // In chunks, so a batch item's --timeout also ends the read of a 2 GB scan on a slow disk.
   constexpr std::uint64_t kChunk = std::uint64_t{64} << 20;
   for (std::uint64_t done = 0; done < size;) {
-    CheckDeadline();
+    CheckCancelled();
     const std::uint64_t want = std::min(kChunk, size - done);
     in.read(data.data() + done, static_cast<std::streamsize>(want));
     // A file that shrank while being read is reported; one that grew is read up to its old size.

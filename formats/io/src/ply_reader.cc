@@ -15,7 +15,7 @@
 #include <sstream>
 #include <vector>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/input_file.h"
@@ -321,7 +321,7 @@ PointCloud ReadPly(const std::string& path) {
     const char* what = what_text.c_str();
     if (e.properties.empty()) continue;
     for (std::uint64_t i = 0; i < e.count; ++i) {
-      if ((i & 0xFFFF) == 0) CheckDeadline();  // a batch item's --timeout covers parsing too
+      if ((i & 0xFFFF) == 0) CheckCancelled();  // a batch item's --timeout covers parsing too
       for (std::size_t j = 0; j < e.properties.size(); ++j) {
         const Property& p = e.properties[j];
         if (p.is_list) {

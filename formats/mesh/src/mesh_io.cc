@@ -8,9 +8,9 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
-#include <unistd.h>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/mesh_file.h"
 
 namespace cablefit {
@@ -114,26 +114,11 @@ void WriteMeshFile(const std::string& path, const TriangleMesh& mesh, double uni
     out->mFaces[f].mIndices = new unsigned[3];
     for (int k = 0; k < 3; ++k) out->mFaces[f].mIndices[k] = static_cast<unsigned>(mesh.faces(k, f));
   }
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  // A hidden sibling, so the rename stays on one file system. Built by appending: GCC 12's
-  // -Wrestrict misfires on "literal" + std::string.
-  std::string temp_name(1, '.');
-  temp_name += target.filename().string();
-  temp_name += ".tmp";
-  temp_name += std::to_string(::getpid());
-  const fs::path temp = target.parent_path() / temp_name;
+  AtomicFile file(path);
   Assimp::Exporter exporter;
-  if (exporter.Export(&scene, format, temp.string()) != aiReturn_SUCCESS) {
-    fs::remove(temp, ec);
+  if (exporter.Export(&scene, format, file.temp_path().string()) != aiReturn_SUCCESS)
     throw FileError(path, std::string("could not write mesh: ") + exporter.GetErrorString());
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw FileError(path, "could not rename the temporary file into place");
-  }
+  file.Commit();
 }
 
 }  // namespace cablefit

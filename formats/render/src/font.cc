@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 
 #include "cablefit/core/base/errors.h"
 
@@ -53,7 +54,7 @@ Font::Font(const std::string& path) {
   if (!std::filesystem::exists(path))
     throw FileError(path, "font not found (install the Debian package fonts-dejavu-core)");
   FT_Library library = nullptr;
-  CABLEFIT_CHECK(FT_Init_FreeType(&library) == 0, "FreeType initialisation failed");
+  if (FT_Init_FreeType(&library) != 0) throw std::runtime_error("FreeType initialisation failed");
   FT_Face face = nullptr;
   if (FT_New_Face(library, path.c_str(), 0, &face) != 0) {
     FT_Done_FreeType(library);

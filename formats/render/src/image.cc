@@ -13,7 +13,7 @@ double ColourDistance(const Rgb& a, const Rgb& b) {
 }
 
 Image Image::Filled(int width, int height, Rgb colour) {
-  CABLEFIT_CHECK(width >= 0 && height >= 0, "negative image size");
+  CABLEFIT_REQUIRE(width >= 0 && height >= 0, "negative image size");
   Image image;
   image.width = width;
   image.height = height;
@@ -27,7 +27,7 @@ Image Image::Filled(int width, int height, Rgb colour) {
 }
 
 Rgb Image::At(int x, int y) const {
-  CABLEFIT_CHECK(Contains(x, y), "pixel outside the image");
+  CABLEFIT_REQUIRE(Contains(x, y), "pixel outside the image");
   const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
   return {pixels[i], pixels[i + 1], pixels[i + 2]};
 }
@@ -63,7 +63,7 @@ void Image::Paste(const Image& source, int x, int y) {
 }
 
 Image Downsample(const Image& image, int factor) {
-  CABLEFIT_CHECK(factor >= 1, "downsample factor must be positive");
+  CABLEFIT_REQUIRE(factor >= 1, "downsample factor must be positive");
   if (factor == 1) return image;
   Image out = Image::Filled(image.width / factor, image.height / factor, Rgb{});
   const int n = factor * factor;

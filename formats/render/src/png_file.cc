@@ -1,21 +1,20 @@
 #include "cablefit/formats/png_file.h"
 
 #include <png.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <new>
+#include <stdexcept>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/atomic_file.h"
 
 namespace cablefit {
 namespace {
-
-namespace fs = std::filesystem;
 
 struct PngError {
   std::string message;
@@ -36,23 +35,19 @@ void AppendBytes(png_structp png, png_bytep data, png_size_t length) {
 
 void NoFlush(png_structp) {}
 
-std::string TempName(const fs::path& target) {
-  static std::atomic<unsigned> counter{0};
-  return target.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-}
-
 }  // namespace
 
 std::vector<std::uint8_t> EncodePng(const Image& image) {
-  CABLEFIT_CHECK(image.width > 0 && image.height > 0 &&
-                     image.pixels.size() == static_cast<std::size_t>(image.width) * image.height * 3,
-                 "EncodePng needs a non-empty RGB image");
+  CABLEFIT_REQUIRE(image.width > 0 && image.height > 0 &&
+                       image.pixels.size() ==
+                           static_cast<std::size_t>(image.width) * image.height * 3,
+                   "EncodePng needs a non-empty RGB image");
   std::vector<std::uint8_t> bytes;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, OnPngError, OnPngWarning);
-  CABLEFIT_CHECK(png != nullptr, "png_create_write_struct failed");
+  if (png == nullptr) throw std::bad_alloc();  // libpng's only reason to return null
   png_infop info = png_create_info_struct(png);
   try {
-    CABLEFIT_CHECK(info != nullptr, "png_create_info_struct failed");
+    if (info == nullptr) throw PngError{"out of memory"};
     png_set_write_fn(png, &bytes, AppendBytes, NoFlush);
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                  static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
@@ -75,29 +70,7 @@ std::vector<std::uint8_t> EncodePng(const Image& image) {
 
 void WritePng(const std::string& path, const Image& image) {
   const std::vector<std::uint8_t> bytes = EncodePng(image);
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) {
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) throw FileError(path, "cannot create directory: " + ec.message());
-  }
-  const std::string temp = TempName(target);
-  std::FILE* file = std::fopen(temp.c_str(), "wb");
-  if (!file) throw FileError(path, std::string("cannot open for writing: ") + std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() &&
-                       std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
-  const int err = errno;
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) {
-    fs::remove(temp, ec);
-    throw FileError(path, std::string("write failed: ") + std::strerror(err));
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    throw FileError(path, "cannot replace file: " + ec.message());
-  }
+  WriteFileAtomically(path, std::string(bytes.begin(), bytes.end()));
 }
 
 Image ReadPng(const std::string& path) {
@@ -107,11 +80,11 @@ Image ReadPng(const std::string& path) {
   if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0)
     throw FileError(path, "not a PNG file");
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, OnPngError, OnPngWarning);
-  CABLEFIT_CHECK(png != nullptr, "png_create_read_struct failed");
+  if (png == nullptr) throw std::bad_alloc();
   png_infop info = png_create_info_struct(png);
   Image image;
   try {
-    CABLEFIT_CHECK(info != nullptr, "png_create_info_struct failed");
+    if (info == nullptr) throw PngError{"out of memory"};
     png_init_io(png, file.get());
     png_set_sig_bytes(png, 8);
     png_read_info(png, info);

@@ -8,9 +8,9 @@
 #include <numeric>
 #include <sstream>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
-#include "circle_fit.h"
+#include "cablefit/formats/internal/circle_fit.h"
 #include "point_index.h"
 #include "stretch.h"
 #include "stretch_chain.h"
@@ -46,7 +46,7 @@ double MarkSparseOutliers(const Eigen::Matrix3Xd& points, const scan::PointIndex
   std::vector<double> dist;
   const int k = std::min<int>(options.outlier_neighbours + 1, static_cast<int>(n));
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (i % 4096 == 0) CheckDeadline();  // a batch item's --timeout covers the scan too
+    if (i % 4096 == 0) CheckCancelled();  // a batch item's --timeout covers the scan too
     index.Nearest(points.col(i), k, &ids, &dist);  // includes the point itself at distance 0
     const double sum = std::accumulate(dist.begin(), dist.end(), 0.0);
     mean_distance[static_cast<std::size_t>(i)] = sum / std::max<double>(1.0, static_cast<double>(dist.size()) - 1.0);

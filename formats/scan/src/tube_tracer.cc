@@ -9,8 +9,8 @@
 #include <cmath>
 #include <limits>
 
-#include "cablefit/core/base/deadline.h"
-#include "circle_fit.h"
+#include "cablefit/core/base/cancellation.h"
+#include "cablefit/formats/internal/circle_fit.h"
 
 namespace cablefit::scan {
 namespace {
@@ -112,7 +112,7 @@ class Tracer {
     for (Eigen::Index i = 0; i < points_.cols(); ++i) {
       const auto is = static_cast<std::size_t>(i);
       if (!usable_[is] || claimed_[is]) continue;
-      CheckDeadline();  // a batch item's --timeout (every seed fits slices)
+      CheckCancelled();  // a batch item's --timeout (every seed fits slices)
       SliceFit seed;
       if (!Seed(static_cast<int>(i), &seed)) {
         ClaimAround(points_.col(i), params_.radius);
@@ -181,7 +181,7 @@ class Tracer {
     Eigen::Vector3d t = direction * seed.tangent;
     const int max_steps = 1 + static_cast<int>(50.0 / params_.step);  // 50 m of cable: a bug guard
     for (int k = 1; k < max_steps; ++k) {
-      if (k % 64 == 0) CheckDeadline();
+      if (k % 64 == 0) CheckCancelled();
       const Eigen::Vector3d guess = centres.back() + params_.step * t;
       SliceFit fit;
       if (!FitSlice(points_, index_, guess, t, Eigen::Vector3d::Zero(), params_, &fit)) break;

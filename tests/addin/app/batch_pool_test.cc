@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include "cablefit/core/base/cancellation.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/solver_failure.h"
+
 #include <atomic>
+#include <new>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -48,6 +53,26 @@ TEST(RunBatch, RunsInParallel) {
   });
   EXPECT_EQ(errors[0], nullptr);
   EXPECT_EQ(errors[1], nullptr);
+}
+
+// Every tier of error in one item becomes that item's one-line problem; the other items run.
+TEST(RunBatch, EachErrorTierOfOneItemIsItsOneLineProblem) {
+  const auto errors = RunBatch(7, 2, [](int i) {
+    if (i == 0) throw InvalidInput("bad value");
+    if (i == 1) throw FileError("a.csv", "row 3: not a number");
+    if (i == 2) throw UsageError("sizes differ");
+    if (i == 3) throw DeadlineExceeded("timed out after 2 s");
+    if (i == 4) throw std::bad_alloc();
+    if (i == 5) throw SolverFailure("the nominal set-up could not be solved");
+  });
+  ASSERT_EQ(errors.size(), 7u);
+  EXPECT_EQ(ErrorText(errors[0]), "bad value");
+  EXPECT_EQ(ErrorText(errors[1]), "row 3: not a number");  // the caller names the file
+  EXPECT_EQ(ErrorText(errors[2]), "internal error: sizes differ");
+  EXPECT_EQ(ErrorText(errors[3]), "timed out after 2 s");
+  EXPECT_EQ(ErrorText(errors[4]), "out of memory");
+  EXPECT_EQ(ErrorText(errors[5]), "the nominal set-up could not be solved");
+  EXPECT_EQ(errors[6], nullptr);
 }
 
 TEST(RunBatch, NoItemsIsNothing) { EXPECT_TRUE(RunBatch(0, 4, [](int) { FAIL(); }).empty()); }

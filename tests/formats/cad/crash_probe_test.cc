@@ -9,7 +9,7 @@
 #include <csignal>
 #include <filesystem>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 
 namespace cablefit {
 namespace {
@@ -41,7 +41,7 @@ TEST(CrashProbe, HangingChildIsKilledAfterTheLimit) {
 }
 
 TEST(CrashProbe, TheThreadsDeadlineEndsTheWaitAndTheChild) {
-  const ScopedDeadline deadline(0.2);
+  const CancellationScope deadline(0.2);
   EXPECT_THROW(Shell("sleep 60", 600.0), DeadlineExceeded);
 }
 

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "cablefit/core/base/deadline.h"
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/ply_reader.h"
 #include "io_test_files.h"
@@ -80,7 +80,7 @@ TEST(PlyRobustness, ReadingHonoursTheItemDeadline) {
     const auto path = dir / (binary ? "big-binary.ply" : "big-ascii.ply");
     WritePly(path.string(), cloud, binary);
     EXPECT_EQ(ReadPly(path.string()).size(), 200000);
-    const ScopedDeadline deadline(1e-9);
+    const CancellationScope deadline(1e-9);
     EXPECT_THROW(ReadPly(path.string()), DeadlineExceeded) << path;
   }
 }

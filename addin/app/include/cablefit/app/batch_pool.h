@@ -19,8 +19,10 @@ int ResolveJobs(int requested, int items);
 /// does not stop the other items. Work items must not share mutable state without locking.
 std::vector<std::exception_ptr> RunBatch(int items, int jobs, const std::function<void(int)>& work);
 
-/// The one-line problem of an item's exception: a FileError's problem without its file name (the
-/// caller names the file), another exception's what().
+/// The one-line problem of an item's exception, one form per error tier: a FileError's problem
+/// without its file name (the caller names the file); "internal error: ..." for a UsageError (a
+/// bug in cablefit, not in the input); "cancelled" / "timed out after N s" for Cancelled; another
+/// exception's what().
 std::string ErrorText(const std::exception_ptr& e);
 
 }  // namespace cablefit::addin

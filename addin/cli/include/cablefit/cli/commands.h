@@ -8,7 +8,9 @@ class App;
 
 namespace cablefit::addin {
 
-/// Exit statuses of cli-v1: 0 all done, 1 some inputs failed, 2 usage error / nothing read.
+/// Exit statuses of cli-v1: 0 all done, 1 some inputs failed (or were cancelled / timed out),
+/// 2 usage error / nothing read. An internal error (cablefit broke a precondition of its own API,
+/// a bug to report) is printed as such and exits 1: the work failed, the input was not at fault.
 enum ExitCode { kExitOk = 0, kExitSomeFailed = 1, kExitUsage = 2 };
 
 void RegisterSimulateCommand(CLI::App& app, int* exit_code);

@@ -1,5 +1,12 @@
-// Error tiers (see docs): CABLEFIT_CHECK aborts on broken invariants (always on); bad user
-// input is a typed exception, caught once at the top of the CLI and printed as one line.
+// Error tiers, so that a host process (the FreeCAD module) survives everything but a bug in
+// cablefit itself:
+//  - a broken internal invariant aborts (CABLEFIT_CHECK, always on): nothing can be trusted;
+//  - caller misuse, a precondition of an API that the calling code violated, throws UsageError
+//    (a std::logic_error; CABLEFIT_REQUIRE): the caller has a bug, the process may go on;
+//  - bad data (a value, file or set-up from the user) throws InvalidInput;
+//  - a stopped run (user cancel, time limit) throws Cancelled (cancellation.h);
+//  - a solver that fails on valid input reports it in its Summary, it does not throw.
+// Each is caught once at the top of the CLI and printed as one line.
 #pragma once
 
 #include <stdexcept>
@@ -34,12 +41,26 @@ class FileError : public InvalidInput {
   std::string problem_;
 };
 
+/// Caller misuse: an API was called against its documented precondition (sizes that do not
+/// match, a call out of order). A bug in the calling code, not in the data.
+class UsageError : public std::logic_error {
+ public:
+  explicit UsageError(const std::string& what) : std::logic_error(OneLine(what)) {}
+};
+
 [[noreturn]] void AbortOnBrokenInvariant(const char* condition, const char* file, int line,
                                          const std::string& message);
 
 }  // namespace cablefit
 
+/// Internal invariant: aborts, because a state that "cannot happen" did.
 #define CABLEFIT_CHECK(cond, msg)                                                   \
   do {                                                                              \
     if (!(cond)) ::cablefit::AbortOnBrokenInvariant(#cond, __FILE__, __LINE__, msg); \
+  } while (0)
+
+/// Precondition on the caller's arguments: throws cablefit::UsageError.
+#define CABLEFIT_REQUIRE(cond, msg)                                       \
+  do {                                                                    \
+    if (!(cond)) throw ::cablefit::UsageError(std::string(msg));          \
   } while (0)

@@ -9,13 +9,11 @@
 #include <functional>
 #include <string>
 
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/rod/rod_state.h"
 
 namespace cablefit {
-
-/// Progress and cancel hook shared by the CLI and the CAD add-in: return false to abort.
-using ProgressCallback = std::function<bool(double fraction, const std::string& stage)>;
 
 struct StaticsOptions {
   /// Newton iterations per solve (direct solve and each continuation step).
@@ -34,6 +32,7 @@ struct StaticsOptions {
   /// a planar loop that would fall sideways), perturb it and solve again to find a stable one.
   /// Off for stability studies that want the verdict of the state they start from.
   bool escape_unstable = true;
+  /// Gets every continuation step; returning false cancels (the solve throws Cancelled).
   ProgressCallback progress;
 
   bool IsValid(std::string* why) const;
@@ -43,7 +42,7 @@ enum class TerminationType {
   kConverged,          ///< gradient and constraint tolerances met
   kNoConvergence,      ///< iteration or continuation budget exhausted
   kLineSearchFailure,  ///< no step decreased the merit function (singular or degenerate set-up)
-  kCancelled,          ///< the progress callback asked to stop
+  kInvalidOptions,     ///< StaticsOptions::IsValid failed; the message says why, nothing solved
 };
 const char* ToString(TerminationType t);
 

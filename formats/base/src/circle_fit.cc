@@ -1,12 +1,12 @@
 // Circle fits for cable cross-sections; references in circle_fit.h.
-#include "circle_fit.h"
+#include "cablefit/formats/internal/circle_fit.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace cablefit::scan {
+namespace cablefit {
 namespace {
 
 constexpr double kTukeyC = 4.685;  // 95 % efficiency under Gaussian noise
@@ -77,10 +77,10 @@ CircleFitResult FitCircleKnownRadius(const Eigen::Matrix2Xd& points, const Eigen
   return fit;
 }
 
-CircleFitResult FitCircleFree(const Eigen::Matrix2Xd& points, const Eigen::VectorXd& weights) {
+CircleFitResult FitCircleAlgebraic(const Eigen::Matrix2Xd& points, const Eigen::VectorXd& weights) {
   CircleFitResult fit;
   const Eigen::Index m = points.cols();
-  if (m < 4 || weights.sum() <= 0.0) return fit;
+  if (m < 3 || !(weights.sum() > 0.0)) return fit;
   // Centre the data first: the algebraic fit is badly conditioned in absolute coordinates.
   const Eigen::Vector2d mean = (points * weights) / weights.sum();
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
@@ -93,10 +93,24 @@ CircleFitResult FitCircleFree(const Eigen::Matrix2Xd& points, const Eigen::Vecto
   }
   const Eigen::Vector3d x = a.ldlt().solve(b);
   if (!x.allFinite()) return fit;
-  Eigen::Vector2d c(-0.5 * x(0), -0.5 * x(1));
-  double r2 = c.squaredNorm() - x(2);
+  const Eigen::Vector2d c(-0.5 * x(0), -0.5 * x(1));
+  const double r2 = c.squaredNorm() - x(2);
   if (!(r2 > 0.0)) return fit;
-  double r = std::sqrt(r2);
+  fit.centre = c + mean;
+  fit.radius = std::sqrt(r2);
+  fit.converged = true;
+  return fit;
+}
+
+CircleFitResult FitCircleFree(const Eigen::Matrix2Xd& points, const Eigen::VectorXd& weights) {
+  CircleFitResult fit;
+  const Eigen::Index m = points.cols();
+  if (m < 4 || weights.sum() <= 0.0) return fit;
+  const CircleFitResult start = FitCircleAlgebraic(points, weights);
+  if (!start.converged) return fit;
+  const Eigen::Vector2d mean = (points * weights) / weights.sum();
+  Eigen::Vector2d c = start.centre - mean;
+  double r = start.radius;
   for (int it = 0; it < 10; ++it) {  // Gauss-Newton on (cx, cy, r)
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
     Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
@@ -119,4 +133,36 @@ CircleFitResult FitCircleFree(const Eigen::Matrix2Xd& points, const Eigen::Vecto
   return fit;
 }
 
-}  // namespace cablefit::scan
+CircleFit FitCircle(const Eigen::Matrix3Xd& points) {
+  CircleFit fit;
+  const Eigen::Index n = points.cols();
+  if (n < 3) return fit;
+  const Eigen::Vector3d mean = points.rowwise().mean();
+  const Eigen::Matrix3Xd centred = points.colwise() - mean;  // 3 x n
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(centred * centred.transpose());
+  // Eigenvalues ascending: the smallest is the plane normal, the largest two span the plane.
+  const Eigen::Vector3d normal = pca.eigenvectors().col(0);
+  const Eigen::Vector3d e1 = pca.eigenvectors().col(2);
+  const Eigen::Vector3d e2 = normal.cross(e1);
+  if (pca.eigenvalues()(1) <= 1e-12 * pca.eigenvalues()(2)) return fit;  // collinear
+  Eigen::Matrix2Xd in_plane(2, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    in_plane.col(i) << centred.col(i).dot(e1), centred.col(i).dot(e2);
+  const CircleFitResult circle = FitCircleAlgebraic(in_plane, Eigen::VectorXd::Ones(n));
+  if (!circle.converged) return fit;
+  fit.centre = mean + circle.centre.x() * e1 + circle.centre.y() * e2;
+  fit.normal = normal;
+  fit.radius = circle.radius;
+  double sum = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d d = points.col(i) - fit.centre;
+    const double h = d.dot(normal);
+    const double off = (d - h * normal).norm() - fit.radius;
+    sum += h * h + off * off;
+  }
+  fit.rms_residual = std::sqrt(sum / static_cast<double>(n));
+  fit.ok = true;
+  return fit;
+}
+
+}  // namespace cablefit

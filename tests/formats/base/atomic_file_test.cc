@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "io_test_files.h"
@@ -72,6 +74,51 @@ TEST(AtomicFile, TargetThatIsAFolderIsAFileErrorAndLeavesNoTemp) {
   EXPECT_THROW_WITH(WriteFileAtomically((dir / "target").string(), std::string("x")), FileError,
                     "cannot replace");
   EXPECT_EQ(ListDir(dir), std::vector<std::string>{"target"});
+}
+
+// Threads replacing the same file at once each get their own temporary name: every write
+// succeeds, the file holds one complete version and no temporary file is left behind.
+TEST(AtomicFile, ConcurrentWritersOfOneFileNeverShareATemporaryFile) {
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "out.txt";
+  std::vector<std::thread> threads;
+  std::vector<int> failures(8, 0);
+  for (int t = 0; t < 8; ++t) {
+    threads.emplace_back([&, t] {
+      for (int i = 0; i < 20; ++i) {
+        try {
+          WriteFileAtomically(path.string(), std::string(10000, static_cast<char>('a' + t)));
+        } catch (const std::exception&) {
+          ++failures[static_cast<std::size_t>(t)];
+        }
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (int f : failures) EXPECT_EQ(f, 0);
+  const std::string text = ReadText(path);
+  ASSERT_EQ(text.size(), 10000u);
+  EXPECT_EQ(text, std::string(10000, text[0]));
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"out.txt"});
+}
+
+TEST(AtomicFile, ForWritersThatWantAFileName) {
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "sub" / "mesh.stl";
+  {
+    AtomicFile file(path.string());
+    EXPECT_EQ(file.temp_path().parent_path(), path.parent_path());  // same file system
+    EXPECT_EQ(file.temp_path().filename().string().rfind(".mesh.stl.tmp.", 0), 0u);
+    WriteText(file.temp_path(), "uncommitted");
+  }
+  EXPECT_TRUE(ListDir(dir / "sub").empty());  // not committed: removed, target untouched
+  {
+    AtomicFile file(path.string());
+    WriteText(file.temp_path(), "solid");
+    file.Commit();
+  }
+  EXPECT_EQ(ReadText(path), "solid");
+  EXPECT_EQ(ListDir(dir / "sub"), std::vector<std::string>{"mesh.stl"});
 }
 
 }  // namespace

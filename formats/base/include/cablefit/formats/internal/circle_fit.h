@@ -1,10 +1,11 @@
-// Robust circle fits to the visible arc of a cable cross-section (points projected into the
-// plane perpendicular to the local axis).
+// Circle fits to cable cross-sections, shared by the scan tracer (robust fits to the visible arc
+// of a scanned cable, in the plane perpendicular to the local axis) and the CAD tube recovery
+// (the cross-section of a swept tube, 3-D points). Both rest on one algebraic fit, Kasa's.
 #pragma once
 
 #include <Eigen/Core>
 
-namespace cablefit::scan {
+namespace cablefit {
 
 struct CircleFitResult {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // 2 [m], plane coordinates
@@ -21,6 +22,13 @@ struct CircleFitResult {
 CircleFitResult FitCircleKnownRadius(const Eigen::Matrix2Xd& points,  // 2 x m [m]
                                      const Eigen::Vector2d& initial,  // 2 [m]
                                      double radius, double scale_floor);
+
+/// The algebraic circle fit of Kasa: minimises sum w_i (|q_i - c|^2 - r^2)^2, a linear least
+/// squares problem; exact for points on a circle, also on a partial arc. Result not converged
+/// for fewer than 3 points, zero total weight or (nearly) collinear points. Reference: I. Kasa,
+/// "A circle fitting procedure and its error analysis", IEEE Trans. Instrum. Meas. 25(1), 1976.
+CircleFitResult FitCircleAlgebraic(const Eigen::Matrix2Xd& points,   // 2 x m [m]
+                                   const Eigen::VectorXd& weights);  // m [-]
 
 /// Radius free: weighted algebraic (Kasa) fit refined by Gauss-Newton on geometric distances.
 /// `weights` (m, >= 0) come from a previous robust fit. Poorly conditioned on short arcs: the
@@ -41,4 +49,16 @@ double ArcSpan(const Eigen::Matrix2Xd& points, const Eigen::Vector2d& centre);
 /// 1.4826 * median(|values|); 0 for empty input. Reorders a copy.
 double RobustScale(Eigen::VectorXd values);
 
-}  // namespace cablefit::scan
+/// A circle in space.
+struct CircleFit {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // [same unit as the points]
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); // unit normal of the best plane
+  double radius = 0.0;
+  double rms_residual = 0.0;  ///< RMS distance of the points from the fitted circle
+  bool ok = false;            ///< false for fewer than 3 points or collinear points
+};
+
+/// Plane by principal components, then the algebraic (Kasa) fit in that plane.
+CircleFit FitCircle(const Eigen::Matrix3Xd& points);  // points: 3 x n
+
+}  // namespace cablefit

@@ -1,0 +1,106 @@
+#include "cablefit/formats/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <random>
+
+#include "cablefit/core/base/errors.h"
+
+namespace cablefit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ".<name>.tmp.<pid>.<counter>.<random>": hidden, in the target's folder (so the rename stays
+// on one file system), unique across threads (the counter), processes (the pid) and hosts
+// sharing a folder (the random part).
+fs::path TempPath(const fs::path& target) {
+  static std::atomic<unsigned> counter{0};
+  std::random_device rd;
+  // Built by appending: GCC 12's -Wrestrict misfires on "literal" + std::string.
+  std::string name(1, '.');
+  name += target.filename().string();
+  name += ".tmp.";
+  name += std::to_string(::getpid());
+  name += '.';
+  name += std::to_string(counter++);
+  name += '.';
+  name += std::to_string(rd() % 1000000u);
+  return target.parent_path() / name;
+}
+
+// fsync by path: the writers (std::ofstream, OCCT, assimp) do not expose their descriptors.
+void SyncFile(const fs::path& file, const std::string& reported_path) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+    throw FileError(reported_path, std::string("cannot reopen temporary file for sync: ") +
+                                       std::strerror(errno));
+  const int rc = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (rc != 0) throw FileError(reported_path, std::string("fsync failed: ") + std::strerror(err));
+}
+
+void SyncDirectory(const fs::path& dir) {
+  // Best effort: makes the rename durable; some file systems refuse fsync on directories.
+  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  (void)::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  const fs::path target(path_);
+  const fs::path dir = target.parent_path();
+  std::error_code ec;
+  if (!dir.empty()) {
+    fs::create_directories(dir, ec);
+    if (ec) throw FileError(path_, "cannot create directory " + dir.string() + ": " + ec.message());
+  }
+  temp_ = TempPath(target);
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  std::error_code ignored;
+  fs::remove(temp_, ignored);
+}
+
+void AtomicFile::Commit() {
+  SyncFile(temp_, path_);
+  std::error_code ec;
+  fs::rename(temp_, path_, ec);
+  if (ec) throw FileError(path_, "cannot replace file: " + ec.message());
+  committed_ = true;
+  SyncDirectory(fs::path(path_).parent_path());
+}
+
+void WriteFileAtomically(const std::string& path,
+                         const std::function<void(std::ostream&)>& writer) {
+  AtomicFile file(path);
+  {
+    std::ofstream out(file.temp_path(), std::ios::binary | std::ios::trunc);
+    if (!out) throw FileError(path, "cannot open for writing: " + std::string(std::strerror(errno)));
+    writer(out);
+    out.flush();
+    if (!out) throw FileError(path, "write failed (disk full?)");
+    out.close();
+    if (out.fail()) throw FileError(path, "closing the file failed");
+  }
+  file.Commit();
+}
+
+void WriteFileAtomically(const std::string& path, const std::string& contents) {
+  WriteFileAtomically(path, [&contents](std::ostream& out) {
+    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  });
+}
+
+}  // namespace cablefit
