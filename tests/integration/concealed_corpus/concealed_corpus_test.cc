@@ -1,4 +1,4 @@
-// Issue 4's concealed-effect corpus: the project's own core solves set-ups with
+// The concealed-effect corpus: the project's own core solves set-ups with
 // a hidden effect, a synthetic hand-held scan is taken of the result (partial
 // circumference, gaps, clamp margins, noise, clustered outliers), and the
 // diagnosis — told nothing — must name the effect. Layouts: sagging, 3-D bend,

@@ -1,4 +1,4 @@
-// Issue 4 proof on the public shape cases: scan -> centreline -> diagnosis, compared with
+// The public shape cases end to end: scan -> centreline -> diagnosis, compared with
 // truth.json (effect, interval IoU >= 0.4, clamp index, parameters within 15 %).
 #include <gtest/gtest.h>
 

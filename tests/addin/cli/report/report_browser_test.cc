@@ -1,4 +1,4 @@
-// Issue 6: the reports open in a real browser (headless Chromium, installed by
+// The reports open in a real browser (headless Chromium, installed by
 // tools/install-deps.sh --with-browser): no console errors, every image loads, the page is not
 // blank. The screenshot is kept next to the report for a person to look at.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Sub-commands of the `cablefit` command line (spec: shared/spec/cli-v1.md). Each Register*
+// Sub-commands of the `cablefit` command line (contract: README, "Command line"). Each Register*
 // adds one sub-command to the app; its callback stores the exit status in `*exit_code`.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Reader for recording cases (case.json, /work/shared/spec/recording-v1.md).
+// Reader for recording cases (case.json, the cable-recording/1 format described in the README).
 #pragma once
 
 #include <string>
