@@ -386,6 +386,7 @@ std::string StepLengthUnit(STEPCAFControl_Reader& reader) {
 Handle(TDocStd_Document) ReadDocument(const std::string& path, bool iges, std::string* unit) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
   if (iges) {
+    const std::lock_guard<std::mutex> lock(IgesReaderMutex());
     IGESCAFControl_Reader reader;
     reader.SetNameMode(true);
     reader.SetColorMode(true);

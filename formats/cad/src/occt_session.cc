@@ -26,4 +26,9 @@ void InitOcctSession() {
   });
 }
 
+std::mutex& IgesReaderMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 }  // namespace cablefit
