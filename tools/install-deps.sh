@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs the Debian packages cablefit builds and tests with (see ../shared/docs/stack.md).
+# Installs the Debian packages cablefit builds and tests with; the README's two set-up commands run it.
 # Idempotent: installs only what is missing, so a second run costs a few seconds.
 # Usage: tools/install-deps.sh [--with-browser] [--with-freecad] [--with-fuzz]
 set -euo pipefail

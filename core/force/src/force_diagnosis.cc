@@ -127,13 +127,6 @@ const char* ToString(ForceEffect effect) {
   return "none";
 }
 
-ForceEffect ForceEffectFromString(const std::string& name) {
-  for (ForceEffect e : kAllEffects) {
-    if (name == ToString(e)) return e;
-  }
-  throw InvalidInput("unknown force effect '" + name + "' (none, stiffness, hysteresis)");
-}
-
 bool ForceDiagnosisOptions::IsValid(std::string* why) const {
   const auto fail = [&](const std::string& reason) {
     if (why != nullptr) *why = reason;

@@ -1,4 +1,5 @@
 #include "cablefit/core/solver/statics_solver.h"
+#include "cablefit/core/solver/internal/kkt_evaluation.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -268,6 +269,8 @@ double HessianScale(const BlockTree& h) {
 
 }  // namespace
 
+namespace internal {
+
 KktEvaluation EvaluateKkt(const RodModel& model, const RodState& state,
                           const Eigen::VectorXd& lambda, bool dense_hessian) {
   std::vector<char> all_free(3 * model.items.size(), 1);
@@ -295,6 +298,8 @@ KktEvaluation EvaluateKkt(const RodModel& model, const RodState& state,
 void RotateFrames(const RodModel& model, const Eigen::VectorXd& theta, RodState* state) {
   ApplyStep(model, theta, 1.0, state);
 }
+
+}  // namespace internal
 
 bool StaticsOptions::IsValid(std::string* why) const {
   auto fail = [why](const char* msg) {

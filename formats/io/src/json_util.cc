@@ -177,12 +177,6 @@ Json MatrixToJson(const Eigen::MatrixXd& m) {
   return rows;
 }
 
-Json VectorToJson(const Eigen::VectorXd& v) {
-  Json out = Json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(NumberOrNull(v[i]));
-  return out;
-}
-
 void RequireKnownKeys(const FieldReader& r, const std::set<std::string>& allowed) {
   for (auto it = r.object().begin(); it != r.object().end(); ++it) {
     if (!allowed.count(it.key())) r.Fail(it.key(), "is not a known field");

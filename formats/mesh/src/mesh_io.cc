@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -46,6 +47,10 @@ TriangleMesh ReadTriangleMesh(const std::string& path, double unit) {
     std::vector<int> local(mesh->mNumVertices);
     for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
       const aiVector3D& p = mesh->mVertices[v];
+      // Checked before the weld: a NaN key would break the map's ordering.
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw FileError(path, "vertex " + std::to_string(v + 1) + " of mesh " + std::to_string(m + 1) +
+                                  " has a coordinate that is not a finite number");
       const auto [it, fresh] =
           index_of.try_emplace({p.x, p.y, p.z}, static_cast<int>(vertices.size()));
       if (fresh) vertices.emplace_back(p.x * unit, p.y * unit, p.z * unit);

@@ -7,11 +7,6 @@
 
 namespace cablefit {
 
-double ColourDistance(const Rgb& a, const Rgb& b) {
-  const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-  return std::sqrt(dr * dr + dg * dg + db * db);
-}
-
 Image Image::Filled(int width, int height, Rgb colour) {
   CABLEFIT_REQUIRE(width >= 0 && height >= 0, "negative image size");
   Image image;

@@ -45,12 +45,6 @@ std::string ToString(SupportMarkerKind kind) {
   return "clamp";
 }
 
-SupportMarkerKind SupportMarkerKindFromString(const std::string& text) {
-  for (auto kind : {SupportMarkerKind::kClamp, SupportMarkerKind::kClip, SupportMarkerKind::kPin})
-    if (ToString(kind) == text) return kind;
-  throw InvalidInput("unknown support kind '" + text + "' (expected clamp, clip or pin)");
-}
-
 ColourScale EffectiveColourScale(const Scene& scene) {
   if (scene.colour_scale) return *scene.colour_scale;
   const auto [lo, hi] = DeviationRangeMm(scene);

@@ -211,12 +211,5 @@ TEST_F(ForceDiagnosisBadInput, InvalidOptions) {
   EXPECT_TRUE(ForceDiagnosisOptions{}.IsValid(nullptr));
 }
 
-TEST(ForceEffectNames, RoundTrip) {
-  for (ForceEffect e : {ForceEffect::kNone, ForceEffect::kStiffness, ForceEffect::kHysteresis}) {
-    EXPECT_EQ(ForceEffectFromString(ToString(e)), e);
-  }
-  EXPECT_THROW_WITH(ForceEffectFromString("twist"), InvalidInput, "unknown force effect");
-}
-
 }  // namespace
 }  // namespace cablefit

@@ -5,11 +5,16 @@
 
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/rod/rod_model.h"
+#include "cablefit/core/solver/internal/kkt_evaluation.h"
 #include "cablefit/core/solver/statics_solver.h"
 #include "test_support.h"
 
 namespace cablefit {
 namespace {
+
+using internal::EvaluateKkt;
+using internal::KktEvaluation;
+using internal::RotateFrames;
 
 RodSpec RichSpec() {
   RodSpec spec;

@@ -14,11 +14,16 @@
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/rod/rod_model.h"
+#include "cablefit/core/solver/internal/kkt_evaluation.h"
 #include "cablefit/core/solver/statics_solver.h"
 #include "network_test_util.h"
 
 namespace cablefit {
 namespace {
+
+using internal::EvaluateKkt;
+using internal::KktEvaluation;
+using internal::RotateFrames;
 
 // The masked system the solver factorises: held rotations are identity rows of
 // H and zero columns of J.

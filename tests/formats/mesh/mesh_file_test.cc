@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <fstream>
 
 #include "cablefit/core/base/errors.h"
@@ -109,6 +111,16 @@ TEST(MeshFile, BadInputGivesOneLineFileErrors) {
   WriteMeshFile(open_path, open, 0.001);
   EXPECT_THROW_WITH(ReadMeshFile(open_path, 0.001), FileError, "not a closed surface");
   EXPECT_THROW_WITH(WriteMeshFile((dir / "x.dxf").string(), cube, 0.001), FileError, "extension");
+  // A binary STL whose second vertex is NaN: said so, not blamed on the surface.
+  std::string stl(80, ' ');
+  const auto put = [&](const void* p, std::size_t n) { stl.append(static_cast<const char*>(p), n); };
+  const std::uint32_t count = 1;
+  put(&count, 4);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float floats[12] = {0, 0, 1, 0, 0, 0, 7, nan, 5, 0, 2, 0};
+  put(floats, sizeof floats);
+  stl.append(2, '\0');
+  EXPECT_THROW_WITH(ReadMeshFile(write("nan.stl", stl), 0.001), FileError, "not a finite number");
 }
 
 }  // namespace

@@ -41,8 +41,6 @@ TEST(ColourMap, ScaleNormalisesAndSceneRangesCombine) {
   EXPECT_DOUBLE_EQ(EffectiveColourScale(a).min, 0.0);
   EXPECT_DOUBLE_EQ(EffectiveColourScale(a).max, 3.0);
   EXPECT_DOUBLE_EQ(CommonColourScale(a, b).max, 9.0);
-  EXPECT_EQ(SupportMarkerKindFromString("clip"), SupportMarkerKind::kClip);
-  EXPECT_THROW(SupportMarkerKindFromString("glue"), InvalidInput);
 }
 
 }  // namespace

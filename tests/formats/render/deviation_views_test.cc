@@ -7,10 +7,13 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/png_file.h"
 #include "synthetic_scene.h"
+#include "colour_distance.h"
 #include "test_support.h"
 
 namespace cablefit {
 namespace {
+
+using testing::ColourDistance;
 
 // llvmpipe's output varies slightly with SIMD width; shading adds a little on top.
 constexpr double kColourTolerance = 40.0;

@@ -7,10 +7,13 @@
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/png_file.h"
+#include "colour_distance.h"
 #include "test_support.h"
 
 namespace cablefit {
 namespace {
+
+using testing::ColourDistance;
 
 double ClosestNear(const Image& image, const Eigen::Vector2d& p, int half, Rgb colour) {
   double best = 1e9;

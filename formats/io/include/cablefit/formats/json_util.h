@@ -82,8 +82,6 @@ Json NumberOrNull(double value);
 Json ToJson(const Vec3& v);
 /// Row-major nested arrays: [[row 0], [row 1], ...]; non-finite entries become null.
 Json MatrixToJson(const Eigen::MatrixXd& m);
-/// A flat array of a vector's entries; non-finite entries become null.
-Json VectorToJson(const Eigen::VectorXd& v);
 
 /// Rejects fields of `r`'s object outside `allowed` (FileError naming the field), so a typo in a
 /// hand-written file is an error, not a silently ignored default.

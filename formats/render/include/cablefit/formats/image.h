@@ -14,8 +14,6 @@ struct Rgb {
   friend bool operator==(const Rgb&, const Rgb&) = default;
 };
 
-/// Euclidean distance between two colours in 8-bit RGB units (0 .. 441).
-double ColourDistance(const Rgb& a, const Rgb& b);
 
 /// Row-major RGB pixels, row 0 at the top.
 struct Image {

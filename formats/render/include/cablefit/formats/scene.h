@@ -31,8 +31,6 @@ struct SceneGhost {
 
 enum class SupportMarkerKind { kClamp, kClip, kPin };
 std::string ToString(SupportMarkerKind kind);
-/// Throws InvalidInput naming the unknown value.
-SupportMarkerKind SupportMarkerKindFromString(const std::string& text);
 
 /// A support, drawn as a marker (square = clamp, ring = clip, triangle = pin) with its label.
 struct SceneSupport {

@@ -30,8 +30,6 @@ namespace cablefit {
 enum class ForceEffect { kNone, kStiffness, kHysteresis };
 /// "none", "stiffness", "hysteresis".
 const char* ToString(ForceEffect effect);
-/// Inverse of ToString; throws InvalidInput for other names.
-ForceEffect ForceEffectFromString(const std::string& name);
 
 struct ForceDiagnosisOptions {
   /// Fewer recorded rows than this are rejected (InvalidInput): a loop and a level need both
