@@ -75,16 +75,19 @@ std::vector<std::string> ExpandInputs(const std::vector<std::string>& inputs,
 }
 
 // Output stems unique within the run: a second "harness" becomes "harness-igs", then "-2"...
+// A stem is cut to kMaxStemBytes so that "<stem>-deviation.png" and the close-ups' names stay
+// within the file system's 255 bytes for any input name.
 std::vector<std::string> UniqueStems(const std::vector<std::string>& files) {
   std::set<std::string> used;
   std::vector<std::string> stems;
   for (const std::string& f : files) {
     const fs::path p(f);
-    std::string stem = p.stem().string();
+    const std::string base = Utf8Prefix(p.stem().string(), kMaxStemBytes);
+    std::string stem = base;
     if (used.count(stem))
       stem +=
           "-" + p.extension().string().substr(std::min<size_t>(1, p.extension().string().size()));
-    for (int k = 2; used.count(stem); ++k) stem = p.stem().string() + "-" + std::to_string(k);
+    for (int k = 2; used.count(stem); ++k) stem = base + "-" + std::to_string(k);
     used.insert(stem);
     stems.push_back(stem);
   }
@@ -281,6 +284,9 @@ int RunRelax(const RelaxArgs& a) {
                     f.stem.c_str(), f.drawing.cables.size(), f.drawing.solids.size(), f.times.read,
                     f.times.relax, f.times.step, f.times.json, f.times.picture);
       bar.PrintLine(stdout, buf);
+    } catch (const FileError& e) {
+      // Names the output that could not be written: the input is not to blame.
+      fail(f, std::string("its results could not be written: ") + e.what());
     } catch (...) {
       fail(f, ErrorText(std::current_exception()));
     }

@@ -23,6 +23,14 @@ std::string Lower(std::string s) {
 
 }  // namespace
 
+std::string Utf8Prefix(const std::string& text, std::size_t max_bytes) {
+  if (text.size() <= max_bytes) return text;
+  std::size_t end = max_bytes;
+  // Back off over continuation bytes (10xxxxxx) to the start of the cut sequence.
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  return text.substr(0, end);
+}
+
 std::string SafeFileName(const std::string& name, const std::string& fallback) {
   std::string out;
   for (char c : name) {
@@ -31,7 +39,7 @@ std::string SafeFileName(const std::string& name, const std::string& fallback) {
     out += ok ? c : '_';
   }
   if (out.empty() || out == "." || out == "..") out = fallback;
-  return out;
+  return Utf8Prefix(out, kMaxStemBytes);
 }
 
 std::vector<std::string> UniqueNames(const std::vector<std::string>& names,

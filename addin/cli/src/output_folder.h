@@ -4,14 +4,22 @@
 // folder that is an input folder, or an output file that is an input file, is a usage error.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace cablefit::addin {
 
+/// The longest a stem of output names may be [bytes]: with the longest suffix a command adds,
+/// a name stays well within the 255 bytes file systems allow.
+inline constexpr std::size_t kMaxStemBytes = 150;
+
+/// The first at most `max_bytes` bytes of `text`, never cutting a UTF-8 sequence in two.
+std::string Utf8Prefix(const std::string& text, std::size_t max_bytes);
+
 /// Output folder names: characters outside [A-Za-z0-9._-] become '_' so that a name can never
-/// leave the output folder; "", "." and ".." become `fallback`.
+/// leave the output folder; "", "." and ".." become `fallback`; cut to kMaxStemBytes.
 std::string SafeFileName(const std::string& name, const std::string& fallback);
 
 /// Makes every name unique within the run and different from every `reserved` name, compared

@@ -24,7 +24,10 @@ fs::path TempPath(const fs::path& target) {
   std::random_device rd;
   // Built by appending: GCC 12's -Wrestrict misfires on "literal" + std::string.
   std::string name(1, '.');
-  name += target.filename().string();
+  // At most 120 bytes of the target's name, so that the temporary name is not too long for the
+  // file system whenever the target's own name is not (a cut UTF-8 sequence does not matter in
+  // a name nobody reads).
+  name += target.filename().string().substr(0, 120);
   name += ".tmp.";
   name += std::to_string(::getpid());
   name += '.';

@@ -49,6 +49,29 @@ TEST(OutputFolder, RelaxRefusesAnInputFolderAsOutput) {
   EXPECT_FALSE(fs::exists(in / "report.html"));
 }
 
+TEST(OutputFolder, TheLongestInputNameStillGetsItsOutputs) {
+  const fs::path in = testing::FreshTempDir("out_long_name");
+  const std::string stem(250, 'a');  // 250 + ".stl" = 254 bytes, within the 255 allowed
+  fs::copy_file(Sample("bent_tubes.stl"), in / (stem + ".stl"));
+  const auto run = RunCablefit("relax " + Q(in / (stem + ".stl")) + " --out " + Q(in / "out"));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const std::string cut = stem.substr(0, 150);
+  for (const std::string& suffix : {".json", ".step", "-deviation.png"})
+    EXPECT_TRUE(fs::exists(in / "out" / (cut + suffix))) << suffix << "\n" << run.err;
+}
+
+TEST(OutputFolder, AnOutputThatCannotBeWrittenIsNamedNotTheInput) {
+  const fs::path in = InputFolder("out_unwritable");
+  // The JSON's name is taken by a folder: the write fails on the output, not on the input.
+  fs::create_directories(in / "out/bent_tubes.json/blocked");
+  const auto run = RunCablefit("relax " + Q(in / "bent_tubes.stl") + " --out " + Q(in / "out") +
+                               " --no-pictures");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("could not be written: " + (in / "out/bent_tubes.json").string()),
+            std::string::npos)
+      << run.err;
+}
+
 TEST(OutputFolder, EmptyOrFileOutIsAUsageError) {
   const fs::path in = InputFolder("out_empty");
   const auto empty = RunCablefit("relax " + Q(in / "bent_tubes.stl") + " --out ''");
