@@ -1,5 +1,7 @@
 #include "cablefit/app/harness_config.h"
 
+#include <fnmatch.h>
+
 #include <filesystem>
 #include <set>
 
@@ -141,6 +143,23 @@ JunctionConfig ReadJunction(const FieldReader& r, int index) {
   return j;
 }
 
+// A non-empty array of non-empty name patterns.
+std::vector<std::string> ReadPatterns(const FieldReader& r, const std::string& key) {
+  const Json& list = r.RequireArray(key);
+  if (list.empty()) r.Fail(key, "must list at least one name pattern");
+  std::vector<std::string> patterns;
+  for (size_t i = 0; i < list.size(); ++i) {
+    if (!list[i].is_string() || list[i].get<std::string>().empty())
+      r.Fail(json::IndexKey(key, i), "must be a non-empty name pattern, got " + json::Describe(list[i]));
+    patterns.push_back(list[i].get<std::string>());
+  }
+  return patterns;
+}
+
+bool Matches(const std::string& pattern, const std::string& name) {
+  return ::fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
+}
+
 template <typename T>
 void Overlay(std::optional<T>* base, const std::optional<T>& top) {
   if (top) *base = top;
@@ -166,12 +185,21 @@ CableConfig HarnessConfig::For(const std::string& name) const {
   return c;
 }
 
+std::string HarnessConfig::RigidReason(const std::string& name) const {
+  for (const std::string& p : rigid)
+    if (Matches(p, name)) return "a rigid part by harness.json (\"rigid\": \"" + p + "\")";
+  if (only.empty()) return "";
+  for (const std::string& p : only)
+    if (Matches(p, name)) return "";
+  return "a rigid part by harness.json (not matched by \"only\")";
+}
+
 HarnessConfig ReadHarnessConfig(const std::string& path) {
   const Json root = json::ReadJsonFile(path);
   if (!root.is_object()) throw FileError(path, "must hold a JSON object");
   const FieldReader r(root, path);
   RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
-                       "junctions", "junction_defaults", "note"});
+                       "junctions", "junction_defaults", "rigid", "only", "note"});
   if (r.Has("format") && r.RequireString("format") != "cablefit-harness/1") {
     r.Fail("format", "must be \"cablefit-harness/1\"");
   }
@@ -181,6 +209,8 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   if (r.Has("min_bend_radius_factor")) {
     h.min_bend_radius_factor = r.RequirePositive("min_bend_radius_factor");
   }
+  if (r.Has("rigid")) h.rigid = ReadPatterns(r, "rigid");
+  if (r.Has("only")) h.only = ReadPatterns(r, "only");
   if (r.Has("junctions")) {
     const Json& list = r.RequireArray("junctions");
     for (size_t i = 0; i < list.size(); ++i)

@@ -19,6 +19,7 @@
 #include "cablefit/app/harness_config.h"
 #include "option_checks.h"
 #include "output_folder.h"
+#include "cablefit/app/cable_selection.h"
 #include "progress_bar.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
@@ -168,6 +169,7 @@ int RunRelax(const RelaxArgs& a) {
       std::unique_lock lock(cad_mutex, std::defer_lock);
       if (IsCadPath(f.input)) lock.lock();
       f.drawing = ReadHarnessInput(f.input, unit);
+      ApplyCableSelection(config, &f.drawing);
       f.read_ok = true;
       for (const std::string& why : f.drawing.skipped)
         bar.PrintLine(stderr, "cablefit: note: " + f.input + ": not taken as a cable: " + why);

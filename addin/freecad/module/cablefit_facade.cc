@@ -12,6 +12,7 @@
 #include "cablefit/formats/colour_map.h"
 #include "cablefit/app/diagnose_case.h"
 #include "cablefit/app/diagnose_output.h"
+#include "cablefit/app/cable_selection.h"
 #include "cablefit/app/harness_config.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
@@ -101,6 +102,7 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
       progress && !progress(0.0, "read " + fs::path(input).filename().string());
   auto t0 = Clock::now();
   f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
+  addin::ApplyCableSelection(config, &f.drawing);
   f.read_ok = true;
   f.times.read = Since(t0);
   // One cancellation scope for the solves: a progress call returning false trips it (here or in

@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/json_util.h"
@@ -347,6 +348,66 @@ TEST(RelaxCli, HarnessJsonSupportsAndMaterialAreUsed) {
   const Json& trunk = CableNamed(j, "trunk");
   EXPECT_FALSE(trunk.at("material").at("defaulted").get<bool>());
   EXPECT_NEAR(trunk.at("diameter").get<double>(), 0.0016, 0.0005);  // the wire's outer diameter
+}
+
+TEST(RelaxCli, RigidPartsNamedInHarnessJsonAreKeptAsSolidsNotRelaxed) {
+  const fs::path dir = testing::FreshTempDir("relax_rigid");
+  WriteText(dir / "rigid.json", R"({"rigid": ["ho*"]})");
+  const auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " +
+                               Q(dir / "out") + " --config " + Q(dir / "rigid.json") +
+                               " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json j = json::ReadJsonFile((dir / "out/legacy_harness.json").string());
+  for (const Json& c : j.at("cables")) EXPECT_NE(c.at("name"), "hose");
+  EXPECT_EQ(j.at("cables").size(), 4u);
+  ASSERT_EQ(j.at("not_cables").size(), 1u);
+  EXPECT_NE(j.at("not_cables")[0].get<std::string>().find("'hose': a rigid part"), std::string::npos);
+  // The hose's solid is copied into the output STEP unchanged: read back without harness.json
+  // it is a tube again, exactly where it was drawn (the relaxed cables moved).
+  const HarnessDrawing drawn = ReadCadFile(Sample("legacy_harness.step").string());
+  const HarnessDrawing back = ReadCadFile((dir / "out/legacy_harness.step").string());
+  ASSERT_EQ(back.cables.size(), 5u);
+  const auto named = [](const HarnessDrawing& d, const std::string& name) {
+    for (const DrawnCable& c : d.cables)
+      if (c.name == name) return c.centreline;
+    ADD_FAILURE() << "no cable " << name;
+    return Polyline{};
+  };
+  const Polyline hose_drawn = named(drawn, "hose"), hose_back = named(back, "hose");
+  ASSERT_GE(hose_back.size(), 2);
+  EXPECT_LT((hose_back.points.col(0) - hose_drawn.points.col(0)).norm(), 1e-5);
+  EXPECT_LT((hose_back.points.col(hose_back.size() - 1) - hose_drawn.points.col(hose_drawn.size() - 1)).norm(), 1e-5);
+  const Polyline trunk_back = named(back, "trunk"), trunk_drawn = named(drawn, "trunk");
+  ASSERT_GE(trunk_back.size(), 2);
+  const auto middle = [](const Polyline& p) {
+    return SampleCenterline(p, Eigen::VectorXd::Constant(1, 0.5 * p.s[p.size() - 1])).points;
+  };
+  EXPECT_GT((middle(trunk_back) - middle(trunk_drawn)).norm(), 1e-3);
+
+  // "only": what it does not match is rigid; a bare curve has no body and is left out.
+  WriteText(dir / "only.json", R"({"only": ["branch_?"]})");
+  const auto only = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " +
+                                Q(dir / "only") + " --config " + Q(dir / "only.json") +
+                                " --no-pictures");
+  ASSERT_EQ(only.exit_code, 0) << only.err;
+  const Json jo = json::ReadJsonFile((dir / "only/legacy_harness.json").string());
+  ASSERT_EQ(jo.at("cables").size(), 2u);
+  for (const Json& c : jo.at("cables"))
+    EXPECT_EQ(c.at("name").get<std::string>().rfind("branch_", 0), 0u) << c.at("name");
+  EXPECT_EQ(jo.at("not_cables").size(), 3u);
+
+  // Nothing left to relax, and an empty list, are one-line errors.
+  WriteText(dir / "none.json", R"({"only": ["no_such_cable"]})");
+  const auto none = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " +
+                                Q(dir / "none") + " --config " + Q(dir / "none.json"));
+  EXPECT_NE(none.exit_code, 0);
+  EXPECT_NE(none.err.find("no cable left to relax"), std::string::npos) << none.err;
+  WriteText(dir / "empty.json", R"({"rigid": []})");
+  const auto empty = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " +
+                                 Q(dir / "empty") + " --config " + Q(dir / "empty.json"));
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("rigid must list at least one name pattern"), std::string::npos)
+      << empty.err;
 }
 
 }  // namespace

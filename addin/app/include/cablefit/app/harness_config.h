@@ -63,8 +63,15 @@ struct HarnessConfig {
   double junction_compliance = 0.0;  ///< [rad/(N m)]
   double junction_mass = 0.0;        ///< [kg]
 
+  /// Name patterns as in a shell ('*', '?', "[abc]"): a drawn cable whose name matches one of
+  /// `rigid`, or none of `only` when `only` is given, is a rigid part (a pipe, a bar), not a
+  /// cable: it is kept as a solid and never relaxed.
+  std::vector<std::string> rigid, only;
+
   /// `defaults` overlaid with the entry for `name` (if any).
   CableConfig For(const std::string& name) const;
+  /// Why the cable `name` is a rigid part by `rigid` / `only`; empty when it is a cable.
+  std::string RigidReason(const std::string& name) const;
 };
 
 /// Reads and validates harness.json. Throws FileError naming the file and field.
