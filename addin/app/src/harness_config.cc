@@ -2,7 +2,10 @@
 
 #include <fnmatch.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include "cablefit/core/base/errors.h"
@@ -100,13 +103,46 @@ void ReadMaterial(const FieldReader& r, CableConfig* c) {
   c->material_source = r.file();
 }
 
+// "drawn" | metres | "+2%" / "-1.5%".
+CableLength ReadLength(const FieldReader& r, bool is_default) {
+  const Json& v = r.object().at("length");
+  CableLength length;
+  if (v.is_number()) {
+    if (is_default) r.Fail("length", "a length in metres is for one cable; the default takes \"+2%\" or \"drawn\"");
+    length.kind = CableLength::Kind::kMetres;
+    length.value = r.RequirePositive("length");
+    return length;
+  }
+  const std::string text = v.is_string() ? v.get<std::string>() : "";
+  if (text == "drawn") return length;
+  std::size_t used = 0;
+  double percent = std::numeric_limits<double>::quiet_NaN();
+  if (text.size() >= 2 && text.back() == '%' && (text[0] == '+' || text[0] == '-')) {
+    try {
+      percent = std::stod(text.substr(0, text.size() - 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+  }
+  if (used + 1 != text.size() || !std::isfinite(percent))
+    r.Fail("length", "must be \"drawn\", a length in metres or a signed percentage such as \"+2%\", got " +
+                         json::Describe(v));
+  // Beyond these a "cable length" is a different cable, most likely a typo.
+  if (percent <= -50 || percent > 100)
+    r.Fail("length", "must change the drawn length by more than -50% and at most +100%, got " + text);
+  length.kind = CableLength::Kind::kRelative;
+  length.value = percent / 100;
+  return length;
+}
+
 CableConfig ReadCable(const FieldReader& r, bool is_default) {
   std::set<std::string> keys = {"material", "diameter",   "gravity", "start",
-                                "end",      "auto_clips", "note"};
+                                "end",      "auto_clips", "length",  "note"};
   if (!is_default) keys.insert("supports");
   RequireKnownKeys(r, keys);
   CableConfig c;
   if (r.Has("diameter")) c.diameter = r.RequirePositive("diameter");
+  if (r.Has("length")) c.length = ReadLength(r, is_default);
   if (r.Has("material")) ReadMaterial(r.Child("material"), &c);
   if (r.Has("gravity")) c.gravity = r.RequireVec3("gravity");
   if (r.Has("start")) c.start = ReadEnd(r, "start");
@@ -177,12 +213,32 @@ CableConfig HarnessConfig::For(const std::string& name) const {
     c.material_source = top.material_source;
   }
   Overlay(&c.diameter, top.diameter);
+  Overlay(&c.length, top.length);
   Overlay(&c.gravity, top.gravity);
   Overlay(&c.start, top.start);
   Overlay(&c.end, top.end);
   Overlay(&c.auto_clips, top.auto_clips);
   c.supports = top.supports;
   return c;
+}
+
+double CableLength::For(double drawn_length) const {
+  switch (kind) {
+    case Kind::kMetres: return value;
+    case Kind::kRelative: return drawn_length * (1 + value);
+    case Kind::kDrawn: break;
+  }
+  return drawn_length;
+}
+
+std::string CableLength::ToString() const {
+  char buf[64];
+  switch (kind) {
+    case Kind::kMetres: std::snprintf(buf, sizeof buf, "%.6g m", value); return buf;
+    case Kind::kRelative: std::snprintf(buf, sizeof buf, "%+.6g%%", 100 * value); return buf;
+    case Kind::kDrawn: break;
+  }
+  return "drawn";
 }
 
 std::string HarnessConfig::RigidReason(const std::string& name) const {

@@ -90,7 +90,11 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   out.name = drawn.name;
   out.route = CleanRoute(drawn.centreline);
   const Polyline& route = out.route;
+  // Support positions and arc lengths are placed on the drawing; a cable built longer or
+  // shorter than drawn (harness.json "length") has its supports at the same fraction of its
+  // length, so the difference is spread evenly along it.
   const double length = route.s[route.size() - 1];
+  const double built_length = cc.length ? cc.length->For(length) : length;
 
   double diameter = drawn.diameter;
   if (cc.diameter) diameter = *cc.diameter;
@@ -118,7 +122,12 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.spec.material.axial_stiffness = DefaultBundleMaterial(diameter).axial_stiffness;
   }
   out.spec.name = drawn.name;
-  out.spec.length = length;
+  out.spec.length = built_length;
+  out.drawn_length = length;
+  if (built_length != length) {
+    out.notes.push_back("built " + Metres(built_length) + " long (harness.json \"length\": " +
+                        cc.length->ToString() + "), drawn " + Metres(length));
+  }
   out.spec.gravity = cc.gravity.value_or(config.gravity);
 
   // Twist-free frames along the drawing: clamps hold the drawn cross-section orientation, with
@@ -168,6 +177,7 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   const double gap = std::max(diameter, 1e-3 * length);
   for (const Candidate& c : Place(candidates, gap, &out.notes)) {
     out.spec.supports.push_back(c.spec);
+    out.spec.supports.back().s *= built_length / length;
     out.support_origin.push_back(c.origin);
   }
   const bool in_network = junction_ends.start || junction_ends.end;
@@ -272,6 +282,7 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
   j["name"] = su.name;
   j["source"] = ToString(drawn.source);
   j["length"] = spec.length;
+  j["drawn_length"] = su.drawn_length;
   j["diameter"] = spec.material.diameter;
   j["diameter_defaulted"] = su.diameter_defaulted;
   j["material"] = {{"bending_stiffness", spec.material.bending_stiffness},

@@ -27,12 +27,23 @@ struct ExtraSupportConfig {
   bool sliding = false;
 };
 
+/// The length a cable is built with: as drawn, a length in metres, or the drawn length changed
+/// by a fraction (harness makers cut cables a few per cent longer than the drawing).
+struct CableLength {
+  enum class Kind { kDrawn, kMetres, kRelative };
+  Kind kind = Kind::kDrawn;
+  double value = 0.0;  ///< [m] for kMetres; the fraction (0.02 = "+2%") for kRelative
+  double For(double drawn_length) const;  ///< [m]
+  std::string ToString() const;           ///< "drawn", "0.52 m", "+2%"
+};
+
 /// What harness.json says about one cable (or the defaults for all cables).
 struct CableConfig {
   /// Rod material without diameter; unset -> derived from the diameter (see relax_material.h).
   std::optional<MaterialSpec> material;
   std::string material_source;     ///< "harness.json", or the section file it came from
   std::optional<double> diameter;  ///< [m] overrides the drawn diameter
+  std::optional<CableLength> length;
   std::optional<Vec3> gravity;     ///< [m/s^2]
   std::optional<EndConfig> start, end;
   std::vector<ExtraSupportConfig> supports;

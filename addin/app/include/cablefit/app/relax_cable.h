@@ -42,6 +42,7 @@ struct CableSetup {
   int cable = 0;  ///< index into HarnessDrawing::cables
   std::string name;
   Polyline route;  ///< drawn route, s by chords from 0 [m]
+  double drawn_length = 0.0;  ///< [m] of the route; spec.length may differ (harness.json "length")
   RodSpec spec;
   bool diameter_defaulted = false;
   bool material_defaulted = false;
