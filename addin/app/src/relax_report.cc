@@ -33,11 +33,27 @@ SupportMarkerKind MarkerOf(SupportKind kind) {
 }
 
 // All cables of `f`, or only cable `only` (>= 0) for a close-up.
+// Red is outside the deviation colour map (viridis), so a failed cable cannot be read as one
+// that deviates.
+constexpr Rgb kFailedColour{214, 39, 40};
+
 Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only = -1) {
   Scene scene;
-  scene.title =
-      (only >= 0 ? f.stem + ": " + f.drawing.cables[static_cast<size_t>(only)].name : f.stem) +
-      ": relaxed, colour = distance to the drawn route (grey line)";
+  int failed = 0;
+  for (size_t i = 0; i < f.drawing.cables.size(); ++i)
+    if ((only < 0 || static_cast<int>(i) == only) && !f.cables[i]) ++failed;
+  const std::string head =
+      only >= 0 ? f.stem + ": " + f.drawing.cables[static_cast<size_t>(only)].name : f.stem;
+  // A cable that failed is shown as drawn, in red, and the title says so: a picture must never
+  // present a shape nobody computed as a relaxed one.
+  if (only >= 0 && failed > 0)
+    scene.title = head + ": FAILED, not relaxed; shown as drawn (red)";
+  else if (failed > 0)
+    scene.title = head + ": relaxed, colour = distance to the drawn route (grey line); " +
+                  std::to_string(failed) + (failed == 1 ? " cable" : " cables") +
+                  " FAILED, shown as drawn (red)";
+  else
+    scene.title = head + ": relaxed, colour = distance to the drawn route (grey line)";
   scene.gravity = config.gravity;
   for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
     if (only >= 0 && static_cast<int>(i) != only) continue;
@@ -57,6 +73,8 @@ Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only =
       }
     } else {
       tube.centreline = drawn.centreline;
+      tube.name = drawn.name + " (failed)";
+      tube.flat_colour = kFailedColour;
     }
     scene.tubes.push_back(std::move(tube));
   }
