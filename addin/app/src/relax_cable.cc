@@ -192,6 +192,49 @@ int OutputSamples(double length) {
   return std::clamp(static_cast<int>(std::ceil(length / 0.001)) + 1, 201, 2001);
 }
 
+void MeasureSpringbackAndSag(const Polyline& weightless, CableRelaxation* out) {
+  CableRelaxation& r = *out;
+  const Polyline shape = SampleCenterline(weightless, r.relaxed.s);
+  double springback = 0.0, sag = 0.0;
+  for (int i = 0; i < shape.size(); ++i) {
+    double d = 0.0;
+    NearestArcLength(r.setup.route, shape.points.col(i), &d);
+    springback = std::max(springback, d);
+    sag = std::max(sag, (r.relaxed.points.col(i) - shape.points.col(i)).norm());
+  }
+  r.springback_max = springback;
+  r.sag_max = sag;
+  r.split_note.clear();
+}
+
+namespace {
+
+// A second solve of the same set-up without gravity, from the same drawn route: a failure here
+// never costs the relaxation itself, it only leaves the split unknown.
+void SplitSpringbackAndSag(RodSimulator& sim, CableRelaxation* out) {
+  CableRelaxation& r = *out;
+  if (r.setup.spec.gravity.norm() == 0) {
+    r.split_note = "no gravity: all of the deviation is springback";
+    r.springback_max = r.max_deviation;
+    r.sag_max = 0.0;
+    return;
+  }
+  RodSpec weightless = r.setup.spec;
+  weightless.gravity = Vec3::Zero();
+  try {
+    const SimulationResult sb = sim.Simulate(weightless, &r.setup.route);
+    if (!sb.converged) {
+      r.split_note = "not computed: the solve without gravity did not converge";
+      return;
+    }
+    MeasureSpringbackAndSag(sb.solution.centerline, &r);
+  } catch (const std::exception& e) {
+    r.split_note = std::string("not computed: ") + e.what();
+  }
+}
+
+}  // namespace
+
 CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
                            double min_bend_radius_factor) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -201,6 +244,7 @@ CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
   RodSimulator sim(options);
   r.result = sim.Simulate(spec, &r.setup.route);
   MeasureRelaxation(min_bend_radius_factor, &r);
+  if (r.result.converged) SplitSpringbackAndSag(sim, &r);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -314,7 +358,13 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
       {"max", r.max_deviation},
       {"rms", r.rms_deviation},
       {"max_at", {{"s", r.max_deviation_s}, {"point", ToJson(r.relaxed.points.col(imax))}}},
-      {"measure", "distance of the relaxed centreline to the drawn route"}};
+      {"measure", "distance of the relaxed centreline to the drawn route"},
+      {"springback_max", r.springback_max ? Json(*r.springback_max) : Json(nullptr)},
+      {"sag_max", r.sag_max ? Json(*r.sag_max) : Json(nullptr)},
+      {"split", "springback: the set-up solved without gravity (the cable's own stiffness "
+                "pulling it towards its natural shape), its largest distance to the drawn route; "
+                "sag: the largest distance gravity adds to that shape at the same arc length"}};
+  if (!r.split_note.empty()) j["deviation"]["split_note"] = r.split_note;
   const Polyline at =
       SampleCenterline(res.solution.centerline, Eigen::VectorXd::Constant(1, r.min_bend_radius_s));
   j["min_bend_radius"] = {{"radius", NumberOrNull(r.min_bend_radius)},

@@ -90,8 +90,11 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
     << (r.setup.diameter_defaulted ? " (assumed)" : "") << "</td><td>"
     << (r.setup.material_defaulted ? "default estimate" : HtmlEscape(r.setup.material_source))
     << "</td><td>" << r.setup.spec.supports.size() << "</td><td data-v=\"" << r.max_deviation
-    << "\">" << FormatLength(r.max_deviation) << " at s = " << FormatLength(r.max_deviation_s)
-    << "</td><td data-v=\"" << r.rms_deviation << "\">" << FormatLength(r.rms_deviation)
+    << "\">" << FormatLength(r.max_deviation) << " at s = " << FormatLength(r.max_deviation_s);
+  if (r.springback_max && r.sag_max)
+    h << "<br><small>springback " << FormatLength(*r.springback_max) << ", sag "
+      << FormatLength(*r.sag_max) << "</small>";
+  h << "</td><td data-v=\"" << r.rms_deviation << "\">" << FormatLength(r.rms_deviation)
     << "</td><td data-v=\"" << r.min_bend_radius << "\">"
     << (std::isfinite(r.min_bend_radius) ? FormatLength(r.min_bend_radius) : "straight")
     << (r.bend_flag ? " <span class=\"badge fail\">&lt; " + FormatLength(r.bend_limit) + "</span>"

@@ -231,6 +231,9 @@ TEST(RelaxCli, StraightCableSagsByTheClampedClampedBeamFormula) {
   std::printf("clamped-clamped sag %.6e m, closed form %.6e m (rel. %.2e)\n", sag, expected,
               sag / expected - 1);
   EXPECT_NEAR(sag, expected, 0.01 * expected);
+  // Drawn straight, a straight cable has nothing to spring back from: all of it is sag.
+  EXPECT_LT(c.at("deviation").at("springback_max").get<double>(), 1e-6);
+  EXPECT_NEAR(c.at("deviation").at("sag_max").get<double>(), sag, 1e-6);
   EXPECT_NEAR(c.at("deviation").at("max_at").at("s").get<double>(), 0.5 * length, 0.02 * length);
   const Json& p = c.at("deviation").at("max_at").at("point");
   EXPECT_LT(p[2].get<double>(), 0.05);  // downwards
@@ -239,6 +242,33 @@ TEST(RelaxCli, StraightCableSagsByTheClampedClampedBeamFormula) {
     EXPECT_NEAR(sp.at("reaction").at("force")[2].get<double>(), 0.5 * q * length,
                 1e-3 * q * length);
   }
+}
+
+// A nearly weightless cable drawn as a sine arch (no equilibrium of a rod clamped at its ends)
+// moves only by springing back: the split puts the whole deviation there and none in sag.
+TEST(RelaxCli, AWeightlessCableDrawnOutOfEquilibriumOnlySpringsBack) {
+  Polyline arch;
+  arch.points.resize(3, 201);
+  for (int i = 0; i <= 200; ++i) {
+    const double x = 0.4 * i / 200.0;
+    arch.points.col(i) = Vec3(x, 0, 0.05 * std::sin(M_PI * x / 0.4));
+  }
+  arch.ParameteriseByChords();
+  const fs::path dir = testing::FreshTempDir("relax_springback");
+  WriteOneCableStep(dir / "arch.step", arch, 0.006);
+  WriteText(dir / "harness.json", R"({"cables": {"test_cable": {"material": {
+    "bending_stiffness": 0.02, "torsional_stiffness": 0.015, "linear_density": 1e-6}}}})");
+  const auto run = RunCablefit("relax " + Q(dir / "arch.step") + " --out " + Q(dir / "out") +
+                               " --config " + Q(dir / "harness.json") + " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json file = json::ReadJsonFile((dir / "out/arch.json").string());
+  const Json& d = CableNamed(file, "test_cable").at("deviation");
+  const double max = d.at("max").get<double>(), springback = d.at("springback_max").get<double>();
+  std::printf("sine arch: deviation %.4e m, springback %.4e m, sag %.4e m\n", max, springback,
+              d.at("sag_max").get<double>());
+  EXPECT_GT(max, 1e-4);
+  EXPECT_NEAR(springback, max, 1e-3 * max);
+  EXPECT_LT(d.at("sag_max").get<double>(), 1e-3 * max);
 }
 
 // A cable cut 10 % longer than its straight drawing, so flexible that it hangs as a catenary:

@@ -3,6 +3,7 @@
 // drawn shape (nearest equilibrium), and what the relax output reports about it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,9 +90,19 @@ struct CableRelaxation {
   };
   std::vector<Stretch> stretches;
   bool taut = false;  ///< some stretch is taut
+  /// Why it moved: the same set-up solved without gravity is the cable springing back towards
+  /// its natural shape; `springback_max` [m] is that shape's largest distance to the drawn
+  /// route, `sag_max` [m] the largest distance gravity then adds (same arc length). Unset when
+  /// not computed (`split_note` says why).
+  std::optional<double> springback_max, sag_max;
+  std::string split_note;
   double seconds = 0.0;
   bool ok() const { return result.converged; }
 };
+
+/// Sets springback_max and sag_max from the same set-up's equilibrium without gravity
+/// (`weightless`: its centreline, s from 0 [m], points 3 x n [m]); r->relaxed must be measured.
+void MeasureSpringbackAndSag(const Polyline& weightless, CableRelaxation* r);
 
 /// Solves the set-up starting from the drawn route and measures the result.
 CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
