@@ -1,5 +1,6 @@
 #include "mcf_skeleton.h"
 
+#include <CGAL/Random.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -17,6 +18,10 @@ CurveSkeleton ComputeMcfSkeleton(const TriangleMesh& mesh) {
   using Kernel = CGAL::Simple_cartesian<double>;
   using Surface = CGAL::Surface_mesh<Kernel::Point_3>;
   using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<Surface>;
+  // CGAL's default random generator is seeded from the clock, and the flow's Delaunay poles
+  // depend on its insertion order: without a fixed seed the same mesh gave different routes (a
+  // 12-triangle cube was a 23 mm "tube" one run in ten). The generator is per thread.
+  CGAL::get_default_random() = CGAL::Random(0);
   Surface surface;
   std::vector<Surface::Vertex_index> index(mesh.vertices.cols());
   for (Eigen::Index v = 0; v < mesh.vertices.cols(); ++v) {

@@ -3,12 +3,14 @@
 // bad inputs in a batch.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/core/solver/rod_simulation.h"
@@ -269,6 +271,31 @@ TEST(RelaxCli, AWeightlessCableDrawnOutOfEquilibriumOnlySpringsBack) {
   EXPECT_GT(max, 1e-4);
   EXPECT_NEAR(springback, max, 1e-3 * max);
   EXPECT_LT(d.at("sag_max").get<double>(), 1e-3 * max);
+}
+
+// The mesh skeleton's Delaunay poles come from a random insertion order whose seed was the
+// clock: two runs a second apart gave cables of different lengths. Now every run is the same.
+TEST(RelaxCli, TheSameMeshGivesTheSameCablesOnEveryRun) {
+  const fs::path dir = testing::FreshTempDir("relax_repeat");
+  std::vector<Json> runs;
+  for (int k = 0; k < 2; ++k) {
+    if (k > 0) std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    const fs::path out = dir / ("out" + std::to_string(k));
+    const auto run = RunCablefit("relax " + Q(Sample("branched_tubes.stl")) + " --out " + Q(out) +
+                                 " --no-pictures");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    runs.push_back(json::ReadJsonFile((out / "branched_tubes.json").string()));
+  }
+  ASSERT_EQ(runs[0].at("cables").size(), runs[1].at("cables").size());
+  for (size_t i = 0; i < runs[0].at("cables").size(); ++i) {
+    const Json& a = runs[0].at("cables")[i];
+    const Json& b = runs[1].at("cables")[i];
+    EXPECT_EQ(a.at("name"), b.at("name"));
+    EXPECT_EQ(a.at("length").get<double>(), b.at("length").get<double>()) << a.at("name");
+    EXPECT_EQ(a.at("diameter").get<double>(), b.at("diameter").get<double>()) << a.at("name");
+    EXPECT_EQ(a.at("deviation").at("max").get<double>(), b.at("deviation").at("max").get<double>())
+        << a.at("name");
+  }
 }
 
 // A cable cut 10 % longer than its straight drawing, so flexible that it hangs as a catenary:
