@@ -56,7 +56,7 @@ TEST(OutputFolder, TheLongestInputNameStillGetsItsOutputs) {
   const auto run = RunCablefit("relax " + Q(in / (stem + ".stl")) + " --out " + Q(in / "out"));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   const std::string cut = stem.substr(0, 150);
-  for (const std::string& suffix : {".json", ".step", "-deviation.png"})
+  for (const char* suffix : {".json", ".step", "-deviation.png"})
     EXPECT_TRUE(fs::exists(in / "out" / (cut + suffix))) << suffix << "\n" << run.err;
 }
 
