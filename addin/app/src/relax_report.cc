@@ -32,11 +32,11 @@ SupportMarkerKind MarkerOf(SupportKind kind) {
   return SupportMarkerKind::kPin;
 }
 
-// All cables of `f`, or only cable `only` (>= 0) for a close-up.
 // Red is outside the deviation colour map (viridis), so a failed cable cannot be read as one
 // that deviates.
 constexpr Rgb kFailedColour{214, 39, 40};
 
+// All cables of `f`, or only cable `only` (>= 0) for a close-up.
 Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only = -1) {
   Scene scene;
   int failed = 0;

@@ -20,7 +20,7 @@ CurveSkeleton ComputeMcfSkeleton(const TriangleMesh& mesh) {
   using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<Surface>;
   // CGAL's default random generator is seeded from the clock, and the flow's Delaunay poles
   // depend on its insertion order: without a fixed seed the same mesh gave different routes (a
-  // 12-triangle cube was a 23 mm "tube" one run in ten). The generator is per thread.
+  // 12-triangle cube was a 23 mm "tube" in about one run of thirty). The generator is per thread.
   CGAL::get_default_random() = CGAL::Random(0);
   Surface surface;
   std::vector<Surface::Vertex_index> index(mesh.vertices.cols());
