@@ -385,8 +385,8 @@ std::string StepLengthUnit(STEPCAFControl_Reader& reader) {
 
 Handle(TDocStd_Document) ReadDocument(const std::string& path, bool iges, std::string* unit) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
+  const std::lock_guard<std::mutex> lock(OcctExchangeMutex());
   if (iges) {
-    const std::lock_guard<std::mutex> lock(IgesReaderMutex());
     IGESCAFControl_Reader reader;
     reader.SetNameMode(true);
     reader.SetColorMode(true);

@@ -26,7 +26,7 @@ void InitOcctSession() {
   });
 }
 
-std::mutex& IgesReaderMutex() {
+std::mutex& OcctExchangeMutex() {
   static std::mutex mutex;
   return mutex;
 }

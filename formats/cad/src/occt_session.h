@@ -12,9 +12,14 @@ inline constexpr double kMetresPerOcctUnit = 1e-3;
 /// initialises the STEP/IGES XDE controllers. Safe to call repeatedly.
 void InitOcctSession();
 
-/// OCCT's IGES file parser (igesread.c and its part list) keeps the file being parsed in static
-/// variables: two IGES reads at once in one process corrupt each other and crash (seen with four
-/// threads of a batch). Every IGES read and transfer holds this lock; STEP's parser is reentrant.
-std::mutex& IgesReaderMutex();
+/// OCCT's data exchange is not reentrant: the IGES parser (igesread.c and its part list) keeps
+/// the file being parsed in static variables, and STEP's transfer sets the length unit in a
+/// process-wide singleton (StepData_GlobalFactors, in STEPControl_ActorRead::PrepareUnits) that
+/// other transfers read, as the writers read the Interface_Static parameters. Two reads at once
+/// crashed (IGES: in iges_nextpart; STEP: in PrepareUnits, about 1 run in 10 of four threads
+/// reading STEP and IGES), and could scale one file by another's unit. Every STEP and IGES read,
+/// transfer and write holds this lock; what comes after the transfer (recognition, sweeps) runs
+/// in parallel.
+std::mutex& OcctExchangeMutex();
 
 }  // namespace cablefit

@@ -21,6 +21,8 @@ namespace cablefit {
 Handle(TDocStd_Document) NewXcafDocument() {
   InitOcctSession();
   Handle(TDocStd_Document) doc;
+  // The application is a process-wide singleton.
+  const std::lock_guard<std::mutex> lock(OcctExchangeMutex());
   XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
   return doc;
 }
@@ -63,6 +65,7 @@ void WriteStepAtomically(const Handle(TDocStd_Document)& doc, const std::string&
                          const std::string& schema) {
   InitOcctSession();
   AtomicFile file(path);
+  const std::lock_guard<std::mutex> lock(OcctExchangeMutex());
   // The schema must be set before the writer is constructed (docs/stack.md, OCCT traps).
   Interface_Static::SetCVal("write.step.schema", schema.c_str());
   Interface_Static::SetCVal("write.step.unit", "MM");
