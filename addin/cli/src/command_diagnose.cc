@@ -2,11 +2,13 @@
 // paths is diagnosed into DIR/<case>/ (diagnosis.json, nominal/fitted curves, report.html), with
 // a run summary DIR/report.html. A bad case is reported and skipped; the others still run.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <thread>
 
 #include "cablefit/app/batch_pool.h"
 #include "cablefit/cli/commands.h"
@@ -88,6 +90,9 @@ int RunDiagnose(const DiagnoseArgs& a) {
     return kExitUsage;
   }
   const int jobs = ResolveJobs(a.jobs, n);
+  // The cores the cases leave idle fit a case's candidate effects in parallel.
+  const int fit_threads =
+      std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / std::max(jobs, 1));
   OutputFolder output(a.out_dir, a.paths);
   output.AddInputs(list.files);
   const std::filesystem::path& out_dir = output.path();
@@ -105,6 +110,7 @@ int RunDiagnose(const DiagnoseArgs& a) {
       try {
         const CancellationScope deadline(a.timeout);  // the solvers check it (core/base/cancellation.h)
         DiagnoseCaseOptions options;
+        options.shape.threads = fit_threads;
         const DiagnosedCase d = DiagnoseCase(file, options, [&](double f, const std::string& s) {
           bar.Update(i, f, std::filesystem::path(file).parent_path().filename().string() + ": " + s);
           return true;

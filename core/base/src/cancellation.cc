@@ -27,6 +27,16 @@ CancellationScope::CancellationScope(double seconds)
   ++t_depth;
 }
 
+CancellationState CurrentCancellation() { return {t_end, t_seconds, t_cancelled}; }
+
+CancellationScope::CancellationScope(const CancellationState& parent)
+    : previous_end_(t_end), previous_seconds_(t_seconds), previous_cancelled_(t_cancelled) {
+  t_end = parent.end;
+  t_seconds = parent.seconds;
+  t_cancelled = t_cancelled || parent.cancelled;
+  ++t_depth;
+}
+
 CancellationScope::~CancellationScope() {
   t_end = previous_end_;
   t_seconds = previous_seconds_;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/parallel_for.h"
 #include "curve_projection.h"
 #include "levenberg_marquardt.h"
 
@@ -45,7 +46,7 @@ FitContext MakeFitContext(const Eigen::Matrix3Xd& points, const Eigen::VectorXd&
 }
 
 Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, const EffectModel& m,
-              int max_iterations) {
+              int max_iterations, int threads) {
   struct Run {
     RodSimulator sim;
     LmResult lm;
@@ -61,17 +62,22 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   };
   // Many starts (interval and contact positions, anisotropy angles, clamp twists): a few
   // iterations each, then only the most promising ones are carried to convergence. Starts that
-  // end in the same place are one basin: the survivors are distinct ones.
+  // end in the same place are one basin: the survivors are distinct ones. Every run owns its
+  // simulator, so the runs go in parallel and are collected in start order.
   const bool screen = m.starts.size() > 2;
+  const int count = static_cast<int>(bases.size() * m.starts.size());
+  std::vector<Run> started(static_cast<size_t>(count));
+  ParallelFor(count, threads, [&](int j) {
+    const size_t b = static_cast<size_t>(j) / m.starts.size();
+    Run& r = started[static_cast<size_t>(j)];
+    r = Run{bases[b], {}, static_cast<int>(b)};
+    run(&r, m.starts[static_cast<size_t>(j) % m.starts.size()], screen ? 4 : max_iterations);
+  });
   std::vector<Run> runs;
-  for (size_t b = 0; b < bases.size(); ++b)
-    for (const Eigen::VectorXd& start : m.starts) {
-      Run r{bases[b], {}, static_cast<int>(b)};
-      run(&r, start, screen ? 4 : max_iterations);
-      if (r.lm.ok) runs.push_back(std::move(r));
-    }
+  for (Run& r : started)
+    if (r.lm.ok) runs.push_back(std::move(r));
   auto by_cost = [](const Run& a, const Run& b) { return a.lm.cost < b.lm.cost; };
-  std::sort(runs.begin(), runs.end(), by_cost);
+  std::stable_sort(runs.begin(), runs.end(), by_cost);
   if (screen) {
     std::vector<Run> kept;
     for (Run& r : runs) {
@@ -83,9 +89,22 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
       if (!same) kept.push_back(std::move(r));
     }
     runs = std::move(kept);
-    for (Run& r : runs) run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
-    std::sort(runs.begin(), runs.end(), by_cost);
+    ParallelFor(static_cast<int>(runs.size()), threads, [&](int j) {
+      Run& r = runs[static_cast<size_t>(j)];
+      run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
+    });
+    std::stable_sort(runs.begin(), runs.end(), by_cost);
   }
+  // A best run stopped by its iteration limit while still descending is carried on: a fit that
+  // has not reached its optimum would lose the comparison to a simpler model, or leave a
+  // residual that fails the adequacy test, for a reason that is not in the recording.
+  if (!runs.empty())
+    for (int more = 0; more < 3 && !runs.front().lm.converged; ++more) {
+      Run& r = runs.front();
+      const double before = r.lm.cost;
+      run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
+      if (!(r.lm.cost < (1.0 - 1e-3) * before)) break;
+    }
   Fit best;
   best.model = &m;
   if (!runs.empty()) {

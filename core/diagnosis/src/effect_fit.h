@@ -37,8 +37,8 @@ struct Fit {
 };
 
 /// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the
-/// nominal, each warm).
+/// nominal, each warm); the starts run on `threads` threads, with the same result as on one.
 Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases,
-              const EffectModel& model, int max_iterations);
+              const EffectModel& model, int max_iterations, int threads = 1);
 
 }  // namespace cablefit

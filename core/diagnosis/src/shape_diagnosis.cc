@@ -165,6 +165,7 @@ bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
   if (max_iterations < 1) return fail("max_iterations must be >= 1");
   if (max_points < 10) return fail("max_points must be >= 10");
   if (!(noise_allowance >= 1.0)) return fail("noise_allowance must be >= 1");
+  if (threads < 1) return fail("threads must be >= 1");
   return true;
 }
 
@@ -188,10 +189,11 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   const NominalBranches branches = SolveNominalBranches(nominal, rec);
   progress(0.05, "nominal");
 
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, branches.reaction_moment);
+  const std::vector<EffectModel> models = BuildEffectModels(nominal, branches.reaction_moment, ctx.points, ctx.s);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
-    fits.push_back(FitEffect(ctx, branches.bases, models[i], options.max_iterations));
+    fits.push_back(FitEffect(ctx, branches.bases, models[i], options.max_iterations,
+                             options.threads));
     progress(0.05 + 0.85 * (i + 1) / models.size(), ToString(models[i].effect));
   }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "contact_frame.h"
+
 namespace cablefit {
 namespace {
 
@@ -47,7 +49,9 @@ void RotateClampAboutTangent(int clamp, double angle, RodSpec* spec) {
 }
 
 std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
-                                           const std::vector<double>& reaction_moment) {
+                                           const std::vector<double>& reaction_moment,
+                                           const Eigen::Matrix3Xd& recorded,
+                                           const Eigen::VectorXd& recorded_s) {
   const double L = nominal.length;
   auto scales = [](std::initializer_list<double> phys) {
     Eigen::VectorXd s(static_cast<int>(phys.size()));
@@ -190,21 +194,28 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     };
     models.push_back(m);
   }
-  {  // A support the model does not have: a point force at arc length sc.
+  {  // A support the model does not have: a point force at arc length sc, normal to the cable
+     // as recorded there (contact_frame.h).
     EffectModel m;
     m.effect = ShapeEffect::kSupportContact;
-    m.physical_parameters = 4;
-    // x = (s, fx, fy, fz)
+    m.physical_parameters = 3;
+    // x = (s, f_up, f_side)
     const double w = std::max(1e-6, nominal.material.linear_density * nominal.gravity.norm() * L);
-    m.scale = scales({0.01 * L, 0.05 * w, 0.05 * w, 0.05 * w});
+    m.scale = scales({0.01 * L, 0.05 * w, 0.05 * w});
     for (int i = 0; i < 8; ++i) {
-      Eigen::VectorXd x = Eigen::VectorXd::Zero(4);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
       x[0] = L * (i + 0.5) / 8;
       m.starts.push_back(x);
     }
+    const Vec3 gravity = nominal.gravity;
+    auto force = [=](const Eigen::VectorXd& x) {
+      const internal::ContactFrame f = internal::RecordedContactFrame(
+          recorded, recorded_s, ContactPosition(x, L), 0.03 * L, gravity);
+      return Vec3(x[1] * f.up + x[2] * f.side);
+    };
     m.apply = [=](const Eigen::VectorXd& x) {
       RodSpec s = nominal;
-      s.point_loads.push_back({ContactPosition(x, L), Vec3(x[1], x[2], x[3])});
+      s.point_loads.push_back({ContactPosition(x, L), force(x)});
       return s;
     };
     // The contact is reported as a short span: a few diameters, at least 1 % of the cable.
@@ -212,11 +223,11 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.describe = [=](const Eigen::VectorXd& x, const EffectDescriptionContext&) {
       EffectDescription d;
       const double sc = ContactPosition(x, L);
-      const Vec3 force(x[1], x[2], x[3]);
+      const Vec3 f = force(x);
       d.interval = std::make_pair(std::max(0.0, sc - half), std::min(L, sc + half));
       d.parameters["s"] = sc;
-      d.parameters["force"] = force.norm();
-      d.vectors["force_vector"] = force;
+      d.parameters["force"] = f.norm();
+      d.vectors["force_vector"] = f;
       d.units = {{"s", "m"}, {"force", "N"}, {"force_vector", "N"}};
       return d;
     };

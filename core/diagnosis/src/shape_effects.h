@@ -55,8 +55,11 @@ void RotateClampAboutTangent(int clamp, double angle, RodSpec* spec);
 
 /// Every fittable model for `nominal`; "none" comes first. `reaction_moment[k]`
 /// is the nominal moment magnitude at support k [N m] (scales the compliance
-/// starts).
+/// starts). `recorded` (3 x n [m]) at arc lengths `recorded_s` (n [m], n >= 2) is
+/// the recorded cable: a contact pushes normal to it.
 std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
-                                           const std::vector<double>& reaction_moment);
+                                           const std::vector<double>& reaction_moment,
+                                           const Eigen::Matrix3Xd& recorded,
+                                           const Eigen::VectorXd& recorded_s);
 
 }  // namespace cablefit

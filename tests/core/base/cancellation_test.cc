@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <thread>
 
 namespace cablefit {
 namespace {
@@ -55,6 +56,33 @@ TEST(Cancellation, ACancelInsideAnItemStopsTheRunButAnItemsTimeoutDoesNot) {
     RequestCancellation();
   }
   EXPECT_THROW(CheckCancelled(), Cancelled);  // the user stopped the whole run
+}
+
+TEST(Cancellation, AWorkerThreadContinuesItsParentsScope) {
+  auto in_worker = [](const CancellationState& parent) {
+    bool timed_out = false, cancelled = false;
+    std::thread([&] {
+      const CancellationScope scope(parent);
+      try {
+        CheckCancelled();
+      } catch (const DeadlineExceeded&) {
+        timed_out = true;
+      } catch (const Cancelled&) {
+        cancelled = true;
+      }
+    }).join();
+    return std::make_pair(timed_out, cancelled);
+  };
+  {
+    const CancellationScope item(1e-9);
+    EXPECT_EQ(in_worker(CurrentCancellation()), std::make_pair(true, false));
+  }
+  {
+    const CancellationScope item(60.0);
+    EXPECT_EQ(in_worker(CurrentCancellation()), std::make_pair(false, false));
+    RequestCancellation();
+    EXPECT_EQ(in_worker(CurrentCancellation()), std::make_pair(false, true));
+  }
 }
 
 }  // namespace

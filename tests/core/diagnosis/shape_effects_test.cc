@@ -26,6 +26,18 @@ RodSpec TwoClamps() {
   return spec;
 }
 
+// The models for `nominal` recorded as drawn straight from its first clamp to its second.
+std::vector<EffectModel> Models(const RodSpec& nominal, const std::vector<double>& moments) {
+  const Vec3 a = nominal.supports.front().position, b = nominal.supports.back().position;
+  Eigen::Matrix3Xd points(3, 11);
+  Eigen::VectorXd s(11);
+  for (int i = 0; i <= 10; ++i) {
+    points.col(i) = a + (b - a) * (i / 10.0);
+    s[i] = nominal.length * i / 10.0;
+  }
+  return BuildEffectModels(nominal, moments, points, s);
+}
+
 const EffectModel& ModelOf(const std::vector<EffectModel>& models, ShapeEffect effect,
                            int clamp = 0) {
   for (const EffectModel& m : models)
@@ -42,7 +54,7 @@ Eigen::VectorXd X(std::initializer_list<double> v) {
 
 TEST(ShapeEffectsTest, EveryModelIsComplete) {
   const RodSpec nominal = TwoClamps();
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, {0.01, 0.01});
+  const std::vector<EffectModel> models = Models(nominal, {0.01, 0.01});
   ASSERT_FALSE(models.empty());
   EXPECT_EQ(models.front().effect, ShapeEffect::kNone);
   for (const EffectModel& m : models) {
@@ -59,7 +71,7 @@ TEST(ShapeEffectsTest, EveryModelIsComplete) {
 
 TEST(ShapeEffectsTest, NoneChangesNothingAndSaysNothing) {
   const RodSpec nominal = TwoClamps();
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const std::vector<EffectModel> models = Models(nominal, {});
   const EffectModel& m = ModelOf(models, ShapeEffect::kNone);
   const EffectDescription d = m.describe(Eigen::VectorXd(0), {{0.2, 0.4}, nullptr});
   EXPECT_TRUE(d.parameters.empty());
@@ -69,7 +81,7 @@ TEST(ShapeEffectsTest, NoneChangesNothingAndSaysNothing) {
 
 TEST(ShapeEffectsTest, CurvatureIsDescribedWhereItIsApplied) {
   const RodSpec nominal = TwoClamps();
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const std::vector<EffectModel> models = Models(nominal, {});
   const EffectModel& m = ModelOf(models, ShapeEffect::kIntrinsicCurvature);
   // A span sticking out of the far end, and one narrower than the narrowest allowed.
   for (const Eigen::VectorXd& x : {X({0.95, 0.3, 3.0, 4.0}), X({0.5, 0.001, -2.0, 0.0})}) {
@@ -90,11 +102,11 @@ TEST(ShapeEffectsTest, CurvatureIsDescribedWhereItIsApplied) {
 
 TEST(ShapeEffectsTest, ContactIsDescribedWhereItPushes) {
   const RodSpec nominal = TwoClamps();
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const std::vector<EffectModel> models = Models(nominal, {});
   const EffectModel& m = ModelOf(models, ShapeEffect::kSupportContact);
   // On a clamp, or beyond the cable, a contact is held off the ends.
   for (double s : {-0.3, 0.0, 0.4, 1.0, 1.7}) {
-    const Eigen::VectorXd x = X({s, 0.0, 0.003, -0.004});
+    const Eigen::VectorXd x = X({s, 0.003, -0.004});
     const RodSpec changed = m.apply(x);
     ASSERT_EQ(changed.point_loads.size(), 1u);
     const EffectDescription d = m.describe(x, {});
@@ -103,6 +115,9 @@ TEST(ShapeEffectsTest, ContactIsDescribedWhereItPushes) {
     EXPECT_LE(d.parameters.at("s"), 0.98);
     EXPECT_NEAR(d.parameters.at("force"), 0.005, 1e-15);
     EXPECT_TRUE(d.vectors.at("force_vector").isApprox(changed.point_loads.front().force));
+    // Normal to the cable (recorded along x), its first component against gravity.
+    EXPECT_NEAR(d.vectors.at("force_vector").x(), 0.0, 1e-15);
+    EXPECT_NEAR(d.vectors.at("force_vector").z(), 0.003, 1e-15);
     ASSERT_TRUE(d.interval.has_value());
     EXPECT_LE(d.interval->first, d.parameters.at("s"));
     EXPECT_GE(d.interval->second, d.parameters.at("s"));
@@ -111,7 +126,7 @@ TEST(ShapeEffectsTest, ContactIsDescribedWhereItPushes) {
 
 TEST(ShapeEffectsTest, MaterialEffectsAreDescribedAsApplied) {
   const RodSpec nominal = TwoClamps();
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, {});
+  const std::vector<EffectModel> models = Models(nominal, {});
   const EffectDescriptionContext where{{0.3, 0.6}, nullptr};
   {
     const EffectModel& m = ModelOf(models, ShapeEffect::kWeightStiffnessRatio);
@@ -137,7 +152,7 @@ TEST(ShapeEffectsTest, MaterialEffectsAreDescribedAsApplied) {
 
 TEST(ShapeEffectsTest, ClampEffectsAreDescribedAsApplied) {
   const RodSpec nominal = TwoClamps();
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, {0.01, 0.02});
+  const std::vector<EffectModel> models = Models(nominal, {0.01, 0.02});
   {
     const EffectModel& m = ModelOf(models, ShapeEffect::kClampCompliance, 1);
     const Eigen::VectorXd x = X({std::log(4.0)});

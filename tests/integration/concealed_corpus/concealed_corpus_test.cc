@@ -75,6 +75,22 @@ RodSpec MakeNominal(const Layout& lay, std::mt19937& rng, double gravity_number 
   return s;
 }
 
+// A support's push of `magnitude` [N] at arc length `sc` of the nominal, normal to the cable there
+// (a support without friction), at `angle` [rad] about the cable from the direction against
+// gravity.
+Vec3 NormalPush(const RodSpec& nominal, double sc, double magnitude, double angle) {
+  RodSimulator sim;
+  const SimulationResult r = sim.Simulate(nominal);
+  const Polyline& c = r.solution.centerline;
+  Eigen::Index i = 1;
+  while (i + 1 < c.s.size() && c.s[i] < sc) ++i;
+  const Vec3 t = (c.points.col(i) - c.points.col(i - 1)).normalized();
+  Vec3 up = Vec3::UnitZ() - t.z() * t;
+  up = up.norm() > 0.1 ? Vec3(up.normalized()) : t.unitOrthogonal();
+  const Vec3 side = t.cross(up);
+  return magnitude * (std::cos(angle) * up + std::sin(angle) * side);
+}
+
 struct Hidden {
   std::string effect;
   RodSpec truth;
@@ -110,9 +126,8 @@ Hidden HideEffect(const std::string& effect, const RodSpec& nominal, bool subtle
     t.material.principal_angle = M_PI * u(rng);
   } else if (effect == "support_contact") {
     const double w = nominal.material.linear_density * 9.81 * L;
-    const double a = 2 * M_PI * u(rng);
-    t.point_loads.push_back({(0.3 + 0.4 * u(rng)) * L,
-                             f * (0.03 + 0.05 * u(rng)) * w * Vec3(std::cos(a), std::sin(a), 0.5)});
+    const double a = 2 * M_PI * u(rng), sc = (0.3 + 0.4 * u(rng)) * L;
+    t.point_loads.push_back({sc, NormalPush(nominal, sc, f * (0.034 + 0.056 * u(rng)) * w, a)});
   } else if (effect == "clamp_compliance") {
     const int k = u(rng) < 0.5 ? 0 : 1;
     RodSimulator sim;
@@ -306,10 +321,9 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
       const RodSpec nominal = MakeNominal(layouts[li], rng);
       Hidden h{"support_contact", nominal};
       const double w = nominal.material.linear_density * 9.81 * nominal.length;
-      const double a = 2 * M_PI * u(rng);
-      h.truth.point_loads.push_back({(0.15 + 0.1 * u(rng)) * nominal.length,
-                                     (0.015 + 0.01 * u(rng)) * w *
-                                         Vec3(std::cos(a), std::sin(a), 0.5)});
+      const double a = 2 * M_PI * u(rng), sc = (0.15 + 0.1 * u(rng)) * nominal.length;
+      h.truth.point_loads.push_back(
+          {sc, NormalPush(nominal, sc, (0.017 + 0.011 * u(rng)) * w, a)});
       const bool run = !testing::SanitizerBuild() || li == 0;
       tally("support_contact", RunCase(layouts[li].name, "support_contact", true, h, nominal, {},
                                        rng, run));

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/diagnosis/shape_diagnosis.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/ply_reader.h"
@@ -86,6 +87,29 @@ TEST(PublicShapeDiagnosisTest, IdentifiesLocalisesAndQuantifies) {
   }
   std::printf("identified %d of %zu\n", correct, dirs.size());
   EXPECT_EQ(correct, static_cast<int>(dirs.size()));
+}
+
+// The candidate fits run on worker threads: the answer must be the same, to the bit, on one.
+TEST(PublicShapeDiagnosisTest, TheSameDiagnosisOnAnyNumberOfThreads) {
+  const fs::path d = testing::PublicCasesDir() / "sample-support_contact";
+  const RecordingCase rc = ReadRecordingCase((d / "case.json").string());
+  const ShapeObservation obs = FromScan(rc, (d / "scan.ply").string());
+  ShapeDiagnosisOptions one, three;
+  three.threads = 3;
+  const ShapeDiagnosis a = DiagnoseShape(rc.nominal, obs, one);
+  const ShapeDiagnosis b = DiagnoseShape(rc.nominal, obs, three);
+  EXPECT_EQ(a.effect, b.effect);
+  EXPECT_EQ(a.confidence, b.confidence);
+  EXPECT_EQ(a.parameters, b.parameters);
+  EXPECT_EQ(a.fitted_max, b.fitted_max);
+  ASSERT_EQ(a.candidates.size(), b.candidates.size());
+  for (size_t i = 0; i < a.candidates.size(); ++i) {
+    EXPECT_EQ(a.candidates[i].effect, b.candidates[i].effect);
+    EXPECT_EQ(a.candidates[i].bic, b.candidates[i].bic);
+  }
+  // The calling thread's time limit stops the workers too.
+  const CancellationScope deadline(1e-3);
+  EXPECT_THROW(DiagnoseShape(rc.nominal, obs, three), DeadlineExceeded);
 }
 
 }  // namespace

@@ -33,9 +33,20 @@ class DeadlineExceeded : public Cancelled {
 /// Opens a cancellation scope on the calling thread while in scope: a time limit `seconds` from
 /// now (<= 0: none) that replaces the enclosing one until exit. A cancel request inside the scope
 /// also cancels the enclosing scopes (the user stopped the whole run, not one item).
+/// The calling thread's scope as a worker thread needs it to do part of the same work item.
+struct CancellationState {
+  double end = 0.0;      // [s] steady-clock seconds, 0 = no deadline
+  double seconds = 0.0;  // [s] the limit as given
+  bool cancelled = false;
+};
+CancellationState CurrentCancellation();
+
 class CancellationScope {
  public:
   explicit CancellationScope(double seconds = 0.0);
+  /// A scope on a worker thread that continues `parent`'s (from CurrentCancellation() on the
+  /// thread that started the worker): the same deadline, already cancelled if it was.
+  explicit CancellationScope(const CancellationState& parent);
   ~CancellationScope();
   CancellationScope(const CancellationScope&) = delete;
   CancellationScope& operator=(const CancellationScope&) = delete;

@@ -44,6 +44,11 @@ struct ShapeDiagnosisOptions {
   /// leave 1.0-2.0 times the estimate on the public scans and the concealed corpus; a set-up that
   /// does not match leaves hundreds.
   double noise_allowance = 3.0;
+  /// The starts of every fit run on this many threads (each start is independent and
+  /// deterministic: the result does not depend on it). Cancellation and the time limit of the
+  /// calling thread's scope apply to them all.
+  int threads = 1;
+  /// Called from the calling thread only.
   ProgressCallback progress;
 
   bool IsValid(std::string* why) const;
