@@ -13,7 +13,10 @@ std::filesystem::path SourceDir() {
   if (const char* env = std::getenv("CABLEFIT_SOURCE_DIR")) return env;
   auto p = std::filesystem::current_path();
   while (!p.empty() && p != p.root_path()) {
-    if (std::filesystem::exists(p / "core") && std::filesystem::exists(p / "formats")) return p;
+    // The build tree mirrors core/ and formats/ under tests/: the source root is the one with
+    // the architecture notes.
+    if (std::filesystem::exists(p / "core") && std::filesystem::exists(p / "docs/architecture.md"))
+      return p;
     p = p.parent_path();
   }
   return std::filesystem::current_path();
