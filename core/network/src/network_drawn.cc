@@ -69,7 +69,7 @@ std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net) {
   std::vector<Eigen::Vector4d> q(m.items.size(), Eigen::Vector4d(1, 0, 0, 0));
   for (size_t b = 0; b < net.branches.size(); ++b) {
     const BranchSpec& br = net.spec.branches[b];
-    const BranchLayout& lay = net.branches[b];
+    const internal::BranchLayout& lay = net.branches[b];
     const Polyline route = ReparameteriseToLength(br.route, br.length);
     const size_t ne = lay.elements.size();
     std::vector<Vec3> t(ne), d1(ne);
@@ -95,15 +95,15 @@ std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net) {
     const RodItem& it = m.items[i];
     if (it.is_element || it.junction >= 0) continue;
     const int b = net.support_branch[it.support];
-    const BranchLayout& lay = net.branches[b];
+    const internal::BranchLayout& lay = net.branches[b];
     const double s = it.s;
     size_t k = 0;
     while (k + 1 < lay.elements.size() && lay.node_s[k + 1] <= s) ++k;
     q[i] = q[m.element_item[lay.elements[k]]];
   }
-  for (const JunctionLayout& jl : net.junctions) {
+  for (const internal::JunctionLayout& jl : net.junctions) {
     if (jl.item < 0) continue;
-    const BranchLayout& lay = net.branches[jl.branches[0]];
+    const internal::BranchLayout& lay = net.branches[jl.branches[0]];
     const int element = jl.branch_end[0] == 0 ? lay.elements.front() : lay.elements.back();
     q[jl.item] = q[m.element_item[element]];
   }

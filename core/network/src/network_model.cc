@@ -15,16 +15,17 @@ NetworkModel CompileNetworkModel(const NetworkSpec& spec, double element_length,
   Discretisation disc;
   disc.element_length = element_length;
   disc.refinement = refinement;
-  std::vector<ModelBranch> branches(nb);
+  std::vector<internal::ModelBranch> branches(nb);
   for (int b = 0; b < nb; ++b) {
     branches[b].spec = &rods[b];
-    branches[b].node_s = BranchNodeArcLengths(rods[b], disc);
+    branches[b].node_s = internal::BranchNodeArcLengths(rods[b], disc);
     branches[b].start_junction = spec.branches[b].start_junction;
     branches[b].end_junction = spec.branches[b].end_junction;
   }
-  std::vector<ModelJunction> junctions;
+  std::vector<internal::ModelJunction> junctions;
   for (const JunctionSpec& j : spec.junctions) junctions.push_back({j.compliance, j.mass});
-  ModelLayout layout = CompileModelLayout(branches, junctions, spec.gravity, spec.name);
+  internal::ModelLayout layout =
+      internal::CompileModelLayout(branches, junctions, spec.gravity, spec.name);
 
   NetworkModel net;
   net.spec = spec;

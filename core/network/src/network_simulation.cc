@@ -40,7 +40,7 @@ NodeInfo NodeTable(const NetworkModel& net) {
   NodeInfo t{std::vector<double>(nn, 0.0), std::vector<int>(nn, -1), std::vector<double>(nn, 0.0),
              std::vector<int>(nn, -1), std::vector<char>(nn, 0)};
   for (size_t b = 0; b < net.branches.size(); ++b) {
-    const BranchLayout& lay = net.branches[b];
+    const internal::BranchLayout& lay = net.branches[b];
     const double r = 0.5 * net.spec.branches[b].material.diameter;
     for (size_t k = 0; k < lay.nodes.size(); ++k) {
       const int n = lay.nodes[k];
@@ -75,7 +75,7 @@ NetworkModel WithHolds(const NetworkModel& base, const std::vector<Hold>& holds,
     m.supports.push_back(sp);
     net.support_branch.push_back(info.branch[h.node]);
   }
-  AssignConstraintReferences(&m);
+  internal::AssignConstraintReferences(&m);
   return net;
 }
 
@@ -108,7 +108,7 @@ std::vector<char> HoldsToRelease(const NetworkModel& net, const RodState& after,
   const RodModel& m = net.rod;
   // A contact row may be measured from another contact (AssignConstraintReferences), so its
   // multiplier alone is not its force: the reactions sum each row's share.
-  const std::vector<Vec3> reaction = SupportReactions(m, after);
+  const std::vector<Vec3> reaction = internal::SupportReactions(m, after);
   std::vector<int> hold_at(m.num_nodes(), -1);
   for (size_t k = 0; k < holds.size(); ++k) hold_at[holds[k].node] = static_cast<int>(k);
   std::vector<char> release(holds.size(), 0);
@@ -202,7 +202,7 @@ HoldUpdate UpdateHolds(const NetworkModel& net, const RodState& before, const Ro
   // goes in, is halved again next round, so a long contact fills in within about log2(its
   // nodes) rounds.
   std::vector<char> take(m.num_nodes(), 0);
-  for (const BranchLayout& lay : net.branches) {
+  for (const internal::BranchLayout& lay : net.branches) {
     for (size_t k = 0; k < lay.nodes.size();) {
       if (depth[lay.nodes[k]] <= 0) {
         ++k;
@@ -273,7 +273,7 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   const int nn = m.num_nodes();
   const Eigen::Matrix3Xd r = st.NodePositions(m);
   for (size_t b = 0; b < net.branches.size(); ++b) {
-    const BranchLayout& lay = net.branches[b];
+    const internal::BranchLayout& lay = net.branches[b];
     Polyline pl;
     pl.s = lay.node_s;
     pl.points.resize(3, static_cast<int>(lay.nodes.size()));
@@ -285,7 +285,7 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   const Vec3 g = st.load_factor * m.gravity;
   for (int i = 0; i < nn; ++i) ext[i] = m.node_mass[i] * g;
   for (const auto& [node, f] : m.node_loads) ext[node] += st.load_factor * f;
-  std::vector<Vec3> reaction = SupportReactions(m, st);
+  std::vector<Vec3> reaction = internal::SupportReactions(m, st);
   reaction[m.anchor_support].setZero();
   Vec3 total = Vec3::Zero();
   for (size_t k = 0; k < m.supports.size(); ++k)
@@ -293,10 +293,10 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   for (const Vec3& f : ext) total += f;
   reaction[m.anchor_support] = -total;
   ext[m.anchor_node] -= total;
-  EnergyAccumulator acc;
+  internal::EnergyAccumulator acc;
   acc.Reset(m, nullptr);
-  AddBendingEnergy(m, st, &acc);
-  AddSupportSpringEnergy(m, st, &acc);
+  internal::AddBendingEnergy(m, st, &acc);
+  internal::AddSupportSpringEnergy(m, st, &acc);
   for (int k = 0; k < net.num_spec_supports; ++k) {
     const RodSupport& sp = m.supports[k];
     SupportReaction rr;
@@ -320,20 +320,20 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   std::vector<Vec3> beyond(ext);
   for (auto it = m.node_order.rbegin(); it != m.node_order.rend(); ++it)
     if (m.node_parent[*it] >= 0) beyond[m.node_parent[*it]] += beyond[*it];
-  for (const JunctionLayout& jl : net.junctions) {
+  for (const internal::JunctionLayout& jl : net.junctions) {
     JunctionLoads jload;
     jload.branch = jl.branches;
     jload.branch_end = jl.branch_end;
     Vec3 fsum = ext[jl.node], msum = Vec3::Zero();
     for (size_t k = 0; k < jl.branches.size(); ++k) {
-      const BranchLayout& lay = net.branches[jl.branches[k]];
+      const internal::BranchLayout& lay = net.branches[jl.branches[k]];
       const int next = jl.branch_end[k] == 0 ? lay.nodes[1] : lay.nodes[lay.nodes.size() - 2];
       const Vec3 f = m.node_parent[next] == jl.node ? beyond[next] : Vec3(-beyond[jl.node]);
       Vec3 mom = Vec3::Zero();
       if (jl.item >= 0) {
-        EnergyAccumulator edge;
+        internal::EnergyAccumulator edge;
         edge.Reset(m, nullptr);
-        AddEdgeBendingEnergy(m.edges[jl.edges[k]], st, &edge);
+        internal::AddEdgeBendingEnergy(m.edges[jl.edges[k]], st, &edge);
         mom = -(quat::ToMatrix(st.q[jl.item]) * edge.gradient.segment<3>(3 * jl.item));
       }
       jload.force.push_back(f);
@@ -353,7 +353,7 @@ RodState DrawnNetworkState(const NetworkModel& net) {
   const RodModel& m = net.rod;
   RodState st;
   st.q = DrawnFrames(net);
-  AlignQuaternionSigns(m, &st);
+  internal::AlignQuaternionSigns(m, &st);
   const int ns = static_cast<int>(m.supports.size());
   st.support_position.assign(ns, Vec3::Zero());
   st.support_q.assign(ns, Eigen::Vector4d(1, 0, 0, 0));

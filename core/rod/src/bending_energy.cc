@@ -8,7 +8,7 @@
 #include "cablefit/core/base/internal/quaternion.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 namespace {
 
 using Mat34 = Eigen::Matrix<double, 3, 4>;
@@ -70,4 +70,4 @@ void AddEdgeBendingEnergy(const RodEdge& e, const RodState& state, EnergyAccumul
   }
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -8,7 +8,7 @@
 
 #include "cablefit/core/base/errors.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 void BlockTree::ResizeChain(int n) {
   std::vector<int> parent(n), order(n);
@@ -118,4 +118,4 @@ void BlockTreeLdlt::Solve(M& b) const {
   }
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -210,7 +210,7 @@ RodState MakeInitialState(const RodModel& model, const Polyline& curve) {
   RodState st;
   st.q.resize(ni);
   for (int i = 0; i < ni; ++i) st.q[i] = quat::FromMatrix(frame[i]);
-  AlignQuaternionSigns(model, &st);
+  internal::AlignQuaternionSigns(model, &st);
   st.lambda.setZero(model.num_constraints);
   // Continuation start: the supports where this shape has them.
   st.support_position.resize(model.supports.size());
@@ -223,7 +223,7 @@ RodState MakeInitialState(const RodModel& model, const Polyline& curve) {
     if (sp.item >= 0) {
       st.support_q[k] = st.q[sp.item];
     } else {
-      st.support_q[k] = SupportTargetQuaternion(sp);
+      st.support_q[k] = internal::SupportTargetQuaternion(sp);
     }
   }
   return st;
@@ -248,7 +248,7 @@ RodState TransferState(const RodModel& from_model, const RodState& from, const R
       const bool known = it.support < static_cast<int>(from_model.supports.size()) &&
                          from_model.supports[it.support].item >= 0;
       st.q[i] = known ? from.q[from_model.supports[it.support].item]
-                      : SupportTargetQuaternion(to_model.supports[it.support]);
+                      : internal::SupportTargetQuaternion(to_model.supports[it.support]);
       continue;
     }
     const double s = it.s;
@@ -261,7 +261,7 @@ RodState TransferState(const RodModel& from_model, const RodState& from, const R
     }
     st.q[i] = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
   }
-  AlignQuaternionSigns(to_model, &st);
+  internal::AlignQuaternionSigns(to_model, &st);
   st.lambda = from.lambda.size() == to_model.num_constraints
                   ? from.lambda
                   : Eigen::VectorXd(Eigen::VectorXd::Zero(to_model.num_constraints));
@@ -271,7 +271,7 @@ RodState TransferState(const RodModel& from_model, const RodState& from, const R
   } else {
     for (const RodSupport& sp : to_model.supports) {
       st.support_position.push_back(sp.position);
-      st.support_q.push_back(SupportTargetQuaternion(sp));
+      st.support_q.push_back(internal::SupportTargetQuaternion(sp));
     }
   }
   st.load_factor = from.load_factor;

@@ -4,7 +4,7 @@
 #include "cablefit/core/base/internal/quaternion.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 void AddLinearTangentTerm(const Eigen::Vector4d& q, const Vec3& a, int item, EnergyAccumulator* acc) {
   // f(theta) = a . R exp([theta]) e3; with a~ = R^T a:
@@ -37,4 +37,4 @@ void AddLoadEnergy(const RodModel& model, const RodState& state, EnergyAccumulat
   acc->value += state.load_factor * fixed;
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

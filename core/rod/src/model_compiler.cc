@@ -8,7 +8,7 @@
 #include "cablefit/core/rod/internal/natural_curvature.h"
 #include "cablefit/core/rod/internal/rod_topology.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 namespace {
 
 // Stiffness of an edge of length ds made of pieces (length_i, K_i) in series with a rotational
@@ -288,4 +288,4 @@ ModelLayout CompileModelLayout(const std::vector<ModelBranch>& branches,
   return out;
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

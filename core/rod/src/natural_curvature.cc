@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cablefit {
+namespace cablefit::internal {
 namespace {
 
 double Smoothstep(double x) {
@@ -52,4 +52,4 @@ Vec3 AverageNaturalCurvature(const std::vector<NaturalCurvatureSpec>& pieces, do
   return sum / (s1 - s0);
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

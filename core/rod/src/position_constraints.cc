@@ -4,7 +4,7 @@
 #include "cablefit/core/base/internal/quaternion.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 Eigen::Matrix<double, Eigen::Dynamic, 3> ConstraintProjector(const RodSupport& support,
                                                              const RodState& state, int k) {
@@ -90,4 +90,4 @@ void AddConstraintCurvature(const RodModel& model, const RodState& state,
   }
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -174,10 +174,10 @@ std::vector<double> SpanBreakpoints(const RodSpec& spec) {
 
 RodModel CompileRodModel(const RodSpec& spec, const Discretisation& disc) {
   ValidateRodSpec(spec);
-  ModelBranch branch;
+  internal::ModelBranch branch;
   branch.spec = &spec;
-  branch.node_s = BranchNodeArcLengths(spec, disc);
-  return CompileModelLayout({branch}, {}, spec.gravity, spec.name).model;
+  branch.node_s = internal::BranchNodeArcLengths(spec, disc);
+  return internal::CompileModelLayout({branch}, {}, spec.gravity, spec.name).model;
 }
 
 }  // namespace cablefit

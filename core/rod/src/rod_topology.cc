@@ -4,7 +4,7 @@
 
 #include "cablefit/core/base/errors.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 void BuildNodeTree(RodModel* model) {
   const int ne = static_cast<int>(model->element_nodes.size());
@@ -139,4 +139,4 @@ void AssignConstraintReferences(RodModel* model) {
   }
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -4,7 +4,7 @@
 #include "cablefit/core/base/internal/quaternion.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 void AddSupportSpringEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc) {
   for (size_t i = 0; i < model.items.size(); ++i) {
@@ -26,4 +26,4 @@ void AddSupportSpringEnergy(const RodModel& model, const RodState& state, Energy
   }
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

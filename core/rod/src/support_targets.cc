@@ -5,7 +5,7 @@
 
 #include "cablefit/core/base/internal/quaternion.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 Eigen::Vector4d SupportTargetQuaternion(const RodSupport& support) {
   return quat::FromMatrix(support.frame.Matrix());
@@ -62,4 +62,4 @@ void AlignQuaternionSigns(const RodModel& model, RodState* state) {
   }
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

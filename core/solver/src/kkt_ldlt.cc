@@ -61,18 +61,19 @@ PivotFactor FactorLeading(const Eigen::Matrix3d& p, int size) {
 
 }  // namespace
 
-bool KktLdlt::SamePattern(const SparseJacobian& jacobian) const {
+bool KktLdlt::SamePattern(const internal::SparseJacobian& jacobian) const {
   if (static_cast<int>(jac_outer_.size()) != jacobian.outerSize() + 1) return false;
   int t = 0;
   for (int r = 0; r < jacobian.outerSize(); ++r) {
     if (jac_outer_[r] != t) return false;
-    for (SparseJacobian::InnerIterator it(jacobian, r); it; ++it, ++t)
+    for (internal::SparseJacobian::InnerIterator it(jacobian, r); it; ++it, ++t)
       if (t >= static_cast<int>(jac_inner_.size()) || jac_inner_[t] != it.col()) return false;
   }
   return jac_outer_.back() == t;
 }
 
-void KktLdlt::Analyze(const RodModel& model, const BlockTree& h, const SparseJacobian& jacobian) {
+void KktLdlt::Analyze(const RodModel& model, const internal::BlockTree& h,
+                      const internal::SparseJacobian& jacobian) {
   const int ni = h.size();
   num_items_ = ni;
   num_rows_ = static_cast<int>(jacobian.rows());
@@ -97,7 +98,7 @@ void KktLdlt::Analyze(const RodModel& model, const BlockTree& h, const SparseJac
   jac_outer_.assign(1, 0);
   jac_inner_.clear();
   for (int r = 0; r < num_rows_; ++r) {
-    for (SparseJacobian::InnerIterator it(jacobian, r); it; ++it) {
+    for (internal::SparseJacobian::InnerIterator it(jacobian, r); it; ++it) {
       row_items[block_of_row_[r] - ni].push_back(static_cast<int>(it.col()) / 3);
       jac_inner_.push_back(static_cast<int>(it.col()));
     }
@@ -182,15 +183,15 @@ void KktLdlt::Analyze(const RodModel& model, const BlockTree& h, const SparseJac
     if (h.Parent(i) >= 0) h_entry_[i] = entry_index(i, h.Parent(i));
   jac_entry_.clear();
   for (int r = 0; r < num_rows_; ++r)
-    for (SparseJacobian::InnerIterator it(jacobian, r); it; ++it)
+    for (internal::SparseJacobian::InnerIterator it(jacobian, r); it; ++it)
       jac_entry_.push_back(entry_index(static_cast<int>(it.col()) / 3, block_of_row_[r]));
   entry_.assign(entry_block_.size(), Eigen::Matrix3d::Zero());
   pivot_.assign(nb, Eigen::Matrix3d::Zero());
 }
 
-KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const BlockTree& h,
-                                   const SparseJacobian& jacobian, const std::vector<char>& free,
-                                   double shift) {
+KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const internal::BlockTree& h,
+                                   const internal::SparseJacobian& jacobian,
+                                   const std::vector<char>& free, double shift) {
   if (num_items_ != h.size() || num_rows_ != jacobian.rows() || !SamePattern(jacobian))
     Analyze(model, h, jacobian);
   const int ni = num_items_;
@@ -223,7 +224,7 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const BlockTree& h,
   int t = 0;
   for (int r = 0; r < num_rows_; ++r) {
     const int b = block_of_row_[r] - ni;
-    for (SparseJacobian::InnerIterator it(jacobian, r); it; ++it, ++t) {
+    for (internal::SparseJacobian::InnerIterator it(jacobian, r); it; ++it, ++t) {
       entry_[jac_entry_[t]](r - row_first_[b], it.col() % 3) = it.value();
       row_scale[b] += it.value() * it.value() / scale;
     }

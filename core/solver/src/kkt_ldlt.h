@@ -48,8 +48,9 @@ class KktLdlt {
   /// m] is added to the free rotations' diagonal. The structure is analysed
   /// again only when the Jacobian's pattern changes, so one object serves every
   /// Newton iteration of a model.
-  Status Factorize(const RodModel& model, const BlockTree& h, const SparseJacobian& jacobian,
-                   const std::vector<char>& free, double shift);
+  Status Factorize(const RodModel& model, const internal::BlockTree& h,
+                   const internal::SparseJacobian& jacobian, const std::vector<char>& free,
+                   double shift);
 
   /// Negative pivot eigenvalues of the last factorisation: rows + the unstable
   /// directions on the constraint manifold.
@@ -61,8 +62,9 @@ class KktLdlt {
              Eigen::VectorXd* lambda) const;
 
  private:
-  void Analyze(const RodModel& model, const BlockTree& h, const SparseJacobian& jacobian);
-  bool SamePattern(const SparseJacobian& jacobian) const;
+  void Analyze(const RodModel& model, const internal::BlockTree& h,
+               const internal::SparseJacobian& jacobian);
+  bool SamePattern(const internal::SparseJacobian& jacobian) const;
 
   // Blocks: items 0 .. ni-1 (3 unknowns each), then one per support with rows
   // (1-3 unknowns, padded to 3 with unit pivots that nothing couples to, so

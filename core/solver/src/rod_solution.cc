@@ -29,7 +29,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   for (const auto& [node, f] : model.node_loads) node_force[node] += state.load_factor * f;
   sol.reactions.resize(model.supports.size());
   Vec3 total = Vec3::Zero();
-  const std::vector<Vec3> rows = SupportReactions(model, state);
+  const std::vector<Vec3> rows = internal::SupportReactions(model, state);
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];
     sol.reactions[k].kind = sp.kind;
@@ -69,9 +69,9 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   }
   // Support moments: the generalised force on each support frame's rotation (body frame), as a
   // world moment exerted by the support on the cable.
-  EnergyAccumulator acc;
+  internal::EnergyAccumulator acc;
   acc.Reset(model, nullptr);
-  AddBendingEnergy(model, state, &acc);
+  internal::AddBendingEnergy(model, state, &acc);
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];
     if (sp.item < 0) continue;

@@ -73,8 +73,8 @@ struct Evaluation {
   double energy = 0.0;
   Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
   Eigen::VectorXd c;
-  SparseJacobian jac;
-  BlockTree hessian;
+  internal::SparseJacobian jac;
+  internal::BlockTree hessian;
 };
 
 std::vector<char> FreeMask(const RodModel& model) {
@@ -88,23 +88,23 @@ std::vector<char> FreeMask(const RodModel& model) {
 void Evaluate(const RodModel& model, const RodState& state, bool with_hessian,
               const Eigen::VectorXd* lambda, const std::vector<char>& free, Evaluation* ev,
               bool with_jacobian = true) {
-  EnergyAccumulator acc;
+  internal::EnergyAccumulator acc;
   const int n = static_cast<int>(model.items.size());
   acc.Reset(model, with_hessian ? &ev->hessian : nullptr);
-  AddBendingEnergy(model, state, &acc);
-  AddLoadEnergy(model, state, &acc);
-  AddSupportSpringEnergy(model, state, &acc);
+  internal::AddBendingEnergy(model, state, &acc);
+  internal::AddLoadEnergy(model, state, &acc);
+  internal::AddSupportSpringEnergy(model, state, &acc);
   ev->energy = acc.value;
   ev->gradient = acc.gradient;
   for (int k = 0; k < 3 * n; ++k)
     if (!free[k]) ev->gradient[k] = 0.0;
   if (!with_jacobian) {
-    EvaluatePositionConstraints(model, state, &ev->c, nullptr);
+    internal::EvaluatePositionConstraints(model, state, &ev->c, nullptr);
   } else {
-    EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
+    internal::EvaluatePositionConstraints(model, state, &ev->c, &ev->jac);
     ev->jac.prune([&free](Eigen::Index, Eigen::Index col, double) { return free[col] != 0; });
   }
-  if (with_hessian && lambda) AddConstraintCurvature(model, state, *lambda, &ev->hessian);
+  if (with_hessian && lambda) internal::AddConstraintCurvature(model, state, *lambda, &ev->hessian);
 }
 
 // Per constraint row: the axial compliance of its support's stretch [m/N] (0 = rigid row).
@@ -143,7 +143,7 @@ double Merit(const RodModel& model, const RodState& state, double nu,
 }
 
 // Replaces masked rows/columns by the identity so the tree keeps one uniform block structure.
-void MaskHessian(const std::vector<char>& free, BlockTree* h) {
+void MaskHessian(const std::vector<char>& free, internal::BlockTree* h) {
   const int n = h->size();
   for (int i = 0; i < n; ++i) {
     const int p = h->Parent(i);
@@ -159,7 +159,7 @@ void MaskHessian(const std::vector<char>& free, BlockTree* h) {
   }
 }
 
-void ShiftFree(const std::vector<char>& free, double mu, BlockTree* h) {
+void ShiftFree(const std::vector<char>& free, double mu, internal::BlockTree* h) {
   for (int i = 0; i < h->size(); ++i)
     for (int d = 0; d < 3; ++d)
       if (free[3 * i + d]) h->Diag(i)(d, d) += mu;
@@ -171,7 +171,7 @@ void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha,
     if (th.squaredNorm() == 0.0) continue;
     state->q[i] = quat::Multiply(state->q[i], quat::Exp(th)).normalized();
   }
-  AlignQuaternionSigns(model, state);
+  internal::AlignQuaternionSigns(model, state);
 }
 
 struct KktSolve {
@@ -184,17 +184,17 @@ struct KktSolve {
 // The same system through the Schur complement S = C H^-1 C^T (O(n m) + O(m^3)): its inertia
 // is inertia(H) + inertia(-S) and, unlike the block elimination, it can regularise rank-deficient
 // support rows. Used only when KktLdlt reports them.
-KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& ev,
+KktSolve SolveKktBySchurComplement(const internal::BlockTree& h_masked, const Evaluation& ev,
                                    const std::vector<char>& free, double mu,
                                    const Eigen::VectorXd& compliance) {
   KktSolve out;
-  BlockTree h = h_masked;
+  internal::BlockTree h = h_masked;
   if (mu != 0.0) ShiftFree(free, mu, &h);
-  BlockTreeLdlt ldlt;
+  internal::BlockTreeLdlt ldlt;
   if (!ldlt.Factorize(h, 0.0)) return out;
   const int m = static_cast<int>(ev.c.size());
   const int n3 = static_cast<int>(ev.gradient.size());
-  BlockTreeLdlt::RowMajorMatrix rhs(n3, 1 + m);
+  internal::BlockTreeLdlt::RowMajorMatrix rhs(n3, 1 + m);
   rhs.col(0) = ev.gradient;
   if (m > 0) rhs.rightCols(m) = ev.jac.transpose();
   ldlt.SolveInPlace(rhs);
@@ -244,7 +244,7 @@ KktSolve SolveKktBySchurComplement(const BlockTree& h_masked, const Evaluation& 
 }
 
 // The Newton system by the O(n) block elimination of the whole KKT matrix (kkt_ldlt.h).
-KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const BlockTree& h_masked,
+KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const internal::BlockTree& h_masked,
                   const Evaluation& ev, const std::vector<char>& free, double mu) {
   switch (kkt->Factorize(model, h_masked, ev.jac, free, mu)) {
     case KktLdlt::Status::kSingularPivot:
@@ -261,7 +261,7 @@ KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const BlockTree& h_masked
   return out;
 }
 
-double HessianScale(const BlockTree& h) {
+double HessianScale(const internal::BlockTree& h) {
   double s = 0.0;
   for (int i = 0; i < h.size(); ++i) s = std::max(s, h.Diag(i).diagonal().cwiseAbs().maxCoeff());
   return std::max(s, 1e-300);
@@ -363,7 +363,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   const double ctol = options.constraint_tolerance * L;
   if (state->lambda.size() != model.num_constraints) state->lambda.setZero(model.num_constraints);
   const Eigen::VectorXd compliance = RowCompliance(model);
-  ApplySupportTargets(model, state);
+  internal::ApplySupportTargets(model, state);
   Evaluation ev;
   KktLdlt kkt_ldlt;  // analysed at the first iteration, reused while the pattern holds
   double nu = 0.0;
@@ -595,7 +595,7 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
   const auto t0 = Clock::now();
   const RodState start = *state;
   RodState direct = start;
-  SetSupportTargets(model, 1.0, start, &direct);
+  internal::SetSupportTargets(model, 1.0, start, &direct);
   direct.load_factor = 1.0;
   direct.natural_factor = 1.0;
   StaticsSummary sum = SolveStaticsDirect(model, &direct, options);
@@ -618,7 +618,7 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
     }
     const double t_next = at_start ? 0.0 : std::min(1.0, t + dt);
     RodState trial = cur;
-    SetSupportTargets(model, t_next, start, &trial);
+    internal::SetSupportTargets(model, t_next, start, &trial);
     trial.load_factor = options.ramp_loads ? t_next : 1.0;
     trial.natural_factor = options.ramp_loads ? t_next : 1.0;
     StaticsSummary step = SolveStaticsDirect(model, &trial, options);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-namespace cablefit {
+namespace cablefit::internal {
 namespace {
 
 constexpr double kTukeyC = 4.685;  // 95 % efficiency under Gaussian noise
@@ -165,4 +165,4 @@ CircleFit FitCircle(const Eigen::Matrix3Xd& points) {
   return fit;
 }
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

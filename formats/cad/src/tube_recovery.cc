@@ -34,22 +34,22 @@ struct LateralFace {
 };
 
 // Fits the circle of the iso-curve at `along`, with the across parameter spanning [a0, a1].
-CircleFit SectionAt(const BRepAdaptor_Surface& surface, bool across_is_u, double along, double a0,
-                    double a1) {
+internal::CircleFit SectionAt(const BRepAdaptor_Surface& surface, bool across_is_u, double along,
+                              double a0, double a1) {
   Eigen::Matrix3Xd pts(3, kPointsPerSection);
   for (int i = 0; i < kPointsPerSection; ++i) {
     const double a = a0 + (a1 - a0) * i / (kPointsPerSection - 1.0);
     const gp_Pnt p = across_is_u ? surface.Value(a, along) : surface.Value(along, a);
     pts.col(i) << p.X(), p.Y(), p.Z();
   }
-  return FitCircle(pts);
+  return internal::FitCircle(pts);
 }
 
 // The angle [rad] the arc of a cross-section subtends: a tube's cross-section is a good part of
 // a circle, while the iso-curve along a barely bent stretch (a torus of 600 m major radius drawn
 // for an 18 mm run, seen in a FreeCAD export) is also circular but subtends almost nothing.
-double SubtendedAngle(const BRepAdaptor_Surface& surface, bool across_is_u, double along,
-                      double a0, double a1, const CircleFit& fit) {
+double SubtendedAngle(const BRepAdaptor_Surface& surface, bool across_is_u, double along, double a0,
+                      double a1, const internal::CircleFit& fit) {
   double length = 0;
   gp_Pnt previous = across_is_u ? surface.Value(a0, along) : surface.Value(along, a0);
   for (int i = 1; i < kPointsPerSection; ++i) {
@@ -71,7 +71,7 @@ double CircleFamilyRadius(const BRepAdaptor_Surface& surface, bool across_is_u, 
   double r_first = 0;
   for (int k = 0; k < 5; ++k) {
     const double along = b0 + (b1 - b0) * k / 4.0;
-    const CircleFit fit = SectionAt(surface, across_is_u, along, a0, a1);
+    const internal::CircleFit fit = SectionAt(surface, across_is_u, along, a0, a1);
     if (!fit.ok || fit.rms_residual > kCircleTolerance * fit.radius) return 0;
     if (SubtendedAngle(surface, across_is_u, along, a0, a1, fit) < kMinSubtendedAngle) return 0;
     if (k == 0) r_first = fit.radius;
@@ -110,7 +110,8 @@ std::optional<LateralFace> SampleLateralFace(const TopoDS_Face& face, double spa
   const int n = std::clamp(static_cast<int>(std::ceil(coarse_length / spacing)) + 1, 8, 20000);
   LateralFace lateral;
   for (int k = 0; k < n; ++k) {
-    const CircleFit fit = SectionAt(surface, across_is_u, b0 + (b1 - b0) * k / (n - 1.0), a0, a1);
+    const internal::CircleFit fit =
+        SectionAt(surface, across_is_u, b0 + (b1 - b0) * k / (n - 1.0), a0, a1);
     if (!fit.ok || fit.rms_residual > kCircleTolerance * radius ||
         std::abs(fit.radius - radius) > kCircleTolerance * radius) {
       return std::nullopt;

@@ -55,8 +55,8 @@ bool FitSlice(const Eigen::Matrix3Xd& points, const PointIndex& index, const Eig
   const auto m = static_cast<Eigen::Index>(ids.size());
   if (m < params.min_support) return false;
   q.conservativeResize(2, m);
-  const CircleFitResult c =
-      FitCircleKnownRadius(q, Eigen::Vector2d::Zero(), r, params.scale_floor);
+  const internal::CircleFitResult c =
+      internal::FitCircleKnownRadius(q, Eigen::Vector2d::Zero(), r, params.scale_floor);
   if (!c.converged || c.centre.norm() > params.window) return false;
   const double cutoff = params.inlier_cutoff * std::max(c.scale, params.scale_floor);
   fit->inliers.clear();
@@ -71,7 +71,8 @@ bool FitSlice(const Eigen::Matrix3Xd& points, const PointIndex& index, const Eig
     if (std::abs(axial[ks]) <= 0.5 * params.step) fit->central_residuals.push_back(res);
     if (std::abs(res) > cutoff) continue;
     inl.col(static_cast<Eigen::Index>(fit->inliers.size())) = q.col(k);
-    weights(static_cast<Eigen::Index>(fit->inliers.size())) = TukeyWeight(res / (1.5 * cutoff));
+    weights(static_cast<Eigen::Index>(fit->inliers.size())) =
+        internal::TukeyWeight(res / (1.5 * cutoff));
     fit->inliers.push_back(ids[ks]);
     fit->axial_min = std::min(fit->axial_min, axial[ks]);
     fit->axial_max = std::max(fit->axial_max, axial[ks]);
@@ -79,7 +80,7 @@ bool FitSlice(const Eigen::Matrix3Xd& points, const PointIndex& index, const Eig
   const auto n_in = static_cast<Eigen::Index>(fit->inliers.size());
   if (n_in < params.min_support) return false;
   inl.conservativeResize(2, n_in);
-  fit->span = ArcSpan(inl, c.centre);
+  fit->span = internal::ArcSpan(inl, c.centre);
   if (fit->span < params.min_span) return false;
   fit->centre = guess + e1 * c.centre.x() + e2 * c.centre.y();
   fit->tangent = tangent;
@@ -87,7 +88,7 @@ bool FitSlice(const Eigen::Matrix3Xd& points, const PointIndex& index, const Eig
   fit->free_radius = std::numeric_limits<double>::quiet_NaN();
   // A free radius is only meaningful on a wide arc (its variance explodes below ~150 degrees).
   if (fit->span > 2.6) {
-    const CircleFitResult f = FitCircleFree(inl, weights.head(n_in));
+    const internal::CircleFitResult f = internal::FitCircleFree(inl, weights.head(n_in));
     if (f.converged && std::abs(f.radius - r) < 0.5 * r) fit->free_radius = f.radius;
   }
   return true;
@@ -163,7 +164,8 @@ class Tracer {
     if (static_cast<int>(slab.size()) < params_.min_support) return false;
     Eigen::Matrix2Xd q(2, static_cast<Eigen::Index>(slab.size()));
     for (std::size_t k = 0; k < slab.size(); ++k) q.col(static_cast<Eigen::Index>(k)) = slab[k];
-    const CircleFitResult free = FitCircleFree(q, Eigen::VectorXd::Ones(q.cols()));
+    const internal::CircleFitResult free =
+        internal::FitCircleFree(q, Eigen::VectorXd::Ones(q.cols()));
     if (!free.converged || free.radius > 4.0 * params_.radius) return false;
     const Eigen::Vector3d guess = p + e1 * free.centre.x() + e2 * free.centre.y();
     if (!FitSlice(points_, index_, guess, axis, Eigen::Vector3d::Zero(), params_, fit)) return false;

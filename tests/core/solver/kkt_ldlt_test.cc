@@ -28,8 +28,8 @@ using internal::RotateFrames;
 // The masked system the solver factorises: held rotations are identity rows of
 // H and zero columns of J.
 struct System {
-  BlockTree h;
-  SparseJacobian jac;
+  internal::BlockTree h;
+  internal::SparseJacobian jac;
   std::vector<char> free;
   Eigen::VectorXd g, c;
   Eigen::MatrixXd dense_h, dense_j;

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace cablefit {
+namespace cablefit::internal {
 namespace {
 
 // `n` points on an arc of `span` [rad] around `centre` with radius `r`.
@@ -67,4 +67,4 @@ TEST(CircleFit, ThreeDimensionalFitFindsCentreNormalAndRadius) {
 }
 
 }  // namespace
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -22,8 +22,8 @@ namespace cablefit {
 struct NetworkModel {
   NetworkSpec spec;
   RodModel rod;
-  std::vector<BranchLayout> branches;
-  std::vector<JunctionLayout> junctions;
+  std::vector<internal::BranchLayout> branches;
+  std::vector<internal::JunctionLayout> junctions;
   std::vector<int> support_branch;  // per model support: its branch
   int num_spec_supports = 0;        // model supports beyond these are contacts
   double total_length = 0.0;        // [m]

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-namespace cablefit {
+namespace cablefit::internal {
 
 struct CircleFitResult {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // 2 [m], plane coordinates
@@ -61,4 +61,4 @@ struct CircleFit {
 /// Plane by principal components, then the algebraic (Kasa) fit in that plane.
 CircleFit FitCircle(const Eigen::Matrix3Xd& points);  // points: 3 x n
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace cablefit {
+namespace cablefit::internal {
 
 class BlockTree {
  public:
@@ -68,4 +68,4 @@ class BlockTreeLdlt {
   int zero_ = 0;
 };
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

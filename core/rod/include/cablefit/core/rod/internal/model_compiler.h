@@ -10,7 +10,7 @@
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/rod/rod_spec.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 /// Where a branch of the compiled model lies.
 struct BranchLayout {
@@ -62,4 +62,4 @@ ModelLayout CompileModelLayout(const std::vector<ModelBranch>& branches,
 /// Nodes of one branch: its span breakpoints, each span cut as `disc` says.
 std::vector<double> BranchNodeArcLengths(const RodSpec& spec, const Discretisation& disc);
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -6,7 +6,7 @@
 
 #include "cablefit/core/rod/rod_spec.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 /// Natural Darboux vector at arc length s (material frame) [1/m].
 Vec3 NaturalCurvatureAt(const std::vector<NaturalCurvatureSpec>& pieces, double s);
@@ -15,4 +15,4 @@ Vec3 NaturalCurvatureAt(const std::vector<NaturalCurvatureSpec>& pieces, double 
 /// enough (composite Gauss) that a sharp interval end costs no more than O(h) locally.
 Vec3 AverageNaturalCurvature(const std::vector<NaturalCurvatureSpec>& pieces, double s0, double s1);
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -10,7 +10,7 @@
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/rod/rod_state.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 struct EnergyAccumulator {
   double value = 0.0;          // [J]
@@ -62,4 +62,4 @@ void AddConstraintCurvature(const RodModel& model, const RodState& state,
 Eigen::Matrix<double, Eigen::Dynamic, 3> ConstraintProjector(const RodSupport& support,
                                                              const RodState& state, int k);
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

@@ -7,7 +7,7 @@
 
 #include "cablefit/core/rod/rod_model.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 /// Fills node_parent, node_parent_element, node_parent_sign, node_order from element_nodes and
 /// anchor_node. Every node must be reachable from the anchor and the elements must form a tree.
@@ -25,4 +25,4 @@ void ComputeLoadCoefficients(const std::vector<Vec3>& node_force, RodModel* mode
 /// BuildNodeTree, and again when supports are added.
 void AssignConstraintReferences(RodModel* model);
 
-}  // namespace cablefit
+}  // namespace cablefit::internal

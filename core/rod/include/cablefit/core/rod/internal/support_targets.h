@@ -5,7 +5,7 @@
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/rod/rod_state.h"
 
-namespace cablefit {
+namespace cablefit::internal {
 
 /// Quaternion of a support's model target frame.
 Eigen::Vector4d SupportTargetQuaternion(const RodSupport& support);
@@ -22,4 +22,4 @@ void ApplySupportTargets(const RodModel& model, RodState* state);
 /// one rotation, but the strain measure Im(conj(q_a) q_b) needs consistent signs).
 void AlignQuaternionSigns(const RodModel& model, RodState* state);
 
-}  // namespace cablefit
+}  // namespace cablefit::internal
