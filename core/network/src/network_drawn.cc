@@ -87,7 +87,7 @@ std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net) {
       r.col(0) = n;
       r.col(1) = t[k].cross(n);
       r.col(2) = t[k];
-      q[m.element_item[lay.elements[k]]] = quat::FromMatrix(r);
+      q[m.element_item[lay.elements[k]]] = internal::quat::FromMatrix(r);
     }
   }
   // Support frames follow their neighbouring element; a breakout its first branch's end.

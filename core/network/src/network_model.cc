@@ -38,7 +38,9 @@ NetworkModel CompileNetworkModel(const NetworkSpec& spec, double element_length,
   // Rest rotations of junction edges: the drawn relative frames.
   const std::vector<Eigen::Vector4d> drawn = DrawnFrames(net);
   for (RodEdge& e : net.rod.edges)
-    if (e.has_rest) e.rest = quat::Multiply(quat::Conjugate(drawn[e.a]), drawn[e.b]).normalized();
+    if (e.has_rest)
+      e.rest =
+          internal::quat::Multiply(internal::quat::Conjugate(drawn[e.a]), drawn[e.b]).normalized();
   return net;
 }
 

@@ -303,7 +303,8 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
     rr.kind = sp.kind;
     rr.s = sp.s;
     rr.force = reaction[k];
-    if (sp.item >= 0) rr.moment = quat::ToMatrix(st.q[sp.item]) * acc.gradient.segment<3>(3 * sp.item);
+    if (sp.item >= 0)
+      rr.moment = internal::quat::ToMatrix(st.q[sp.item]) * acc.gradient.segment<3>(3 * sp.item);
     sol->reactions.push_back(rr);
   }
   for (size_t k = 0; k < holds.size(); ++k) {
@@ -334,7 +335,7 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
         internal::EnergyAccumulator edge;
         edge.Reset(m, nullptr);
         internal::AddEdgeBendingEnergy(m.edges[jl.edges[k]], st, &edge);
-        mom = -(quat::ToMatrix(st.q[jl.item]) * edge.gradient.segment<3>(3 * jl.item));
+        mom = -(internal::quat::ToMatrix(st.q[jl.item]) * edge.gradient.segment<3>(3 * jl.item));
       }
       jload.force.push_back(f);
       jload.moment.push_back(mom);

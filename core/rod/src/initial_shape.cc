@@ -209,7 +209,7 @@ RodState MakeInitialState(const RodModel& model, const Polyline& curve) {
   }
   RodState st;
   st.q.resize(ni);
-  for (int i = 0; i < ni; ++i) st.q[i] = quat::FromMatrix(frame[i]);
+  for (int i = 0; i < ni; ++i) st.q[i] = internal::quat::FromMatrix(frame[i]);
   internal::AlignQuaternionSigns(model, &st);
   st.lambda.setZero(model.num_constraints);
   // Continuation start: the supports where this shape has them.

@@ -15,7 +15,7 @@ Eigen::Matrix3Xd RodState::NodePositions(const RodModel& model) const {
     }
     const int j = model.node_parent_element[node];
     r.col(node) = r.col(parent) + (model.node_parent_sign[node] * model.element_length[j]) *
-                                      quat::D3(q[model.element_item[j]]);
+                                      internal::quat::D3(q[model.element_item[j]]);
   }
   return r;
 }

@@ -17,7 +17,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   for (int j = 0; j < ne; ++j) {
     const int item = model.element_item[j];
     sol.frame_s[j] = model.items[item].s;
-    const Eigen::Matrix3d r = quat::ToMatrix(state.q[item]);
+    const Eigen::Matrix3d r = internal::quat::ToMatrix(state.q[item]);
     sol.frames[j].d1 = r.col(0);
     sol.frames[j].d2 = r.col(1);
     sol.frames[j].d3 = r.col(2);
@@ -57,13 +57,13 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
     const RodEdge& edge = model.edges[e];
     const Eigen::Vector4d& qa = state.q[edge.a];
     const Eigen::Vector4d& qb = state.q[edge.b];
-    const Vec3 u = (2.0 / edge.ds) * (quat::LeftStrain(qa) * qb);
+    const Vec3 u = (2.0 / edge.ds) * (internal::quat::LeftStrain(qa) * qb);
     const Vec3 du = u - state.natural_factor * edge.natural;
     const Vec3 m = edge.stiffness * du;
     elastic += 0.5 * edge.ds * du.dot(m);
     twist += edge.ds * u[2];
     // The relative rotation's axis has equal coordinates in both frames: use their mean.
-    const Eigen::Matrix3d ra = quat::ToMatrix(qa), rb = quat::ToMatrix(qb);
+    const Eigen::Matrix3d ra = internal::quat::ToMatrix(qa), rb = internal::quat::ToMatrix(qb);
     sol.internal_moment.col(e) = 0.5 * (ra + rb) * m;
     sol.moment_s[e] = edge.s;
   }
@@ -75,7 +75,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];
     if (sp.item < 0) continue;
-    const Eigen::Matrix3d r = quat::ToMatrix(state.q[sp.item]);
+    const Eigen::Matrix3d r = internal::quat::ToMatrix(state.q[sp.item]);
     sol.reactions[k].moment = r * acc.gradient.segment<3>(3 * sp.item);
   }
   sol.elastic_energy = elastic;

@@ -169,7 +169,7 @@ void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha,
   for (size_t i = 0; i < model.items.size(); ++i) {
     const Eigen::Vector3d th = alpha * step.segment<3>(3 * i);
     if (th.squaredNorm() == 0.0) continue;
-    state->q[i] = quat::Multiply(state->q[i], quat::Exp(th)).normalized();
+    state->q[i] = internal::quat::Multiply(state->q[i], internal::quat::Exp(th)).normalized();
   }
   internal::AlignQuaternionSigns(model, state);
 }

@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-namespace cablefit::quat {
+namespace cablefit::internal::quat {
 
 using Q = Eigen::Vector4d;
 
@@ -105,4 +105,4 @@ inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
   return s;
 }
 
-}  // namespace cablefit::quat
+}  // namespace cablefit::internal::quat
