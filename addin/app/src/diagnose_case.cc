@@ -141,7 +141,8 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   out->deviation_unit = "m";
   out->explanation = ExplainShapeDiagnosis(d, rc.nominal);
   out->explained = d.explained;
-  for (const std::string& note : d.notes) out->notes.push_back(out->observation_source + ": " + note);
+  for (const DiagnosisNote& note : d.notes)
+    out->notes.push_back(out->observation_source + ": " + DescribeNote(note));
   for (const EffectCandidate& c : d.candidates)
     out->candidates.emplace_back(ToString(c.effect), c.score);
   out->shape = std::move(d);

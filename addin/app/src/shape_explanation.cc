@@ -140,4 +140,28 @@ std::string ExplainShapeDiagnosis(const ShapeDiagnosis& d, const RodSpec& nomina
   return ex.str();
 }
 
+std::string DescribeNote(const DiagnosisNote& note) {
+  switch (note.kind) {
+    case DiagnosisNote::Kind::kRecordingReversed:
+      return "the recording runs from the last clamp to the first (its ends are " +
+             Mm(note.gap_as_listed) + " from their clamps as listed, " + Mm(note.gap_reversed) +
+             " reversed); it was reversed";
+    case DiagnosisNote::Kind::kFitDidNotHold:
+      return std::string("the ") + ToString(note.effect) +
+             " fit did not hold in the accurate solve (" +
+             (note.solved ? "it gave back most of its improvement" : "not solved") +
+             "); the next candidate was taken";
+    case DiagnosisNote::Kind::kFitFromOtherEquilibrium: {
+      const char* from = note.start == NominalStart::kSolverStart ? "the solver's own start"
+                         : note.start == NominalStart::kMirroredSag
+                             ? "the recorded sag mirrored through the chord"
+                             : "the recorded shape";
+      return std::string("the ") + ToString(note.effect) +
+             " fit started from another equilibrium of the nominal set-up (solved from " + from +
+             ") than the one the recorded shape leads to";
+    }
+  }
+  return "";
+}
+
 }  // namespace cablefit::addin

@@ -206,11 +206,13 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
                         noise_sigma, options.noise_allowance);
   out.explained = out.adequacy.chi_square <= out.adequacy.limit;
   out.notes.insert(out.notes.end(), final_solves.notes.begin(), final_solves.notes.end());
-  if (fits[chosen].branch > 0)
-    out.notes.push_back(std::string("the ") + ToString(models[chosen].effect) +
-                        " fit started from another equilibrium of the nominal set-up (solved "
-                        "from " + branches.names[static_cast<size_t>(fits[chosen].branch)] +
-                        ") than the one the recorded shape leads to");
+  if (fits[chosen].branch > 0) {
+    DiagnosisNote note;
+    note.kind = DiagnosisNote::Kind::kFitFromOtherEquilibrium;
+    note.effect = models[chosen].effect;
+    note.start = branches.starts[static_cast<size_t>(fits[chosen].branch)];
+    out.notes.push_back(note);
+  }
 
   DescribeResult(rec, ctx, models, fits, selection.Rank(final_solves.rejected), final_solves,
                  &out);

@@ -41,10 +41,11 @@ FinalSolves SolveFinal(const RodSpec& nominal, const PreparedRecording& recordin
                                      : INFINITY;
     if (cost <= nominal_cost - 0.5 * gained) break;
     out.rejected[chosen] = true;
-    out.notes.push_back(std::string("the ") + ToString(models[chosen].effect) +
-                        " fit did not hold in the accurate solve (" +
-                        (rf.converged ? "it gave back most of its improvement" : "not solved") +
-                        "); the next candidate was taken");
+    DiagnosisNote note;
+    note.kind = DiagnosisNote::Kind::kFitDidNotHold;
+    note.effect = models[chosen].effect;
+    note.solved = rf.converged;
+    out.notes.push_back(note);
     chosen = choose(out.rejected);
   }
   out.chosen = chosen;

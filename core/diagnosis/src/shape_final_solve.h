@@ -20,7 +20,7 @@ struct FinalSolves {
   std::vector<bool> rejected;   // per fit: set aside because it did not hold
   RodSpec fitted_spec;
   RodSolution nominal, fitted;  // full accuracy
-  std::vector<std::string> notes;
+  std::vector<DiagnosisNote> notes;
 };
 
 /// `choose(rejected)` gives the best-ranked fit not rejected; `none_index` is the nominal's.

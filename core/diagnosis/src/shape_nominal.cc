@@ -33,11 +33,11 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
   // continued) and from the recorded sag mirrored through the chord, when those settle visibly
   // elsewhere (20 noise sigmas: far beyond the recording's scatter).
   out.bases = {base};
-  out.names = {"the recorded shape"};
+  out.starts = {NominalStart::kRecordedShape};
   std::vector<Polyline> shapes{nominal_fit_solution.solution.centerline};
   const Eigen::VectorXd at = UniformArcLengths(L, 101);
   const double noise_sigma = recording.observation.noise_sigma;
-  auto try_branch = [&](const Polyline* start, const char* name) {
+  auto try_branch = [&](const Polyline* start, NominalStart how) {
     RodSimulator sim(fit_opt);
     SimulationResult r;
     try {
@@ -52,9 +52,9 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
         return;
     shapes.push_back(r.solution.centerline);
     out.bases.push_back(sim);
-    out.names.push_back(name);
+    out.starts.push_back(how);
   };
-  try_branch(nullptr, "the solver's own start");
+  try_branch(nullptr, NominalStart::kSolverStart);
   if (nominal.supports.size() > 1) {
     const Vec3 a = nominal.supports.front().position, b = nominal.supports.back().position;
     if ((b - a).norm() > 1e-9) {
@@ -62,7 +62,7 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
       Polyline mirrored = initial;
       for (int i = 0; i < mirrored.size(); ++i)
         mirrored.points.col(i) = a + half_turn * (Vec3(initial.points.col(i)) - a);
-      try_branch(&mirrored, "the recorded sag mirrored through the chord");
+      try_branch(&mirrored, NominalStart::kMirroredSag);
     }
   }
   return out;

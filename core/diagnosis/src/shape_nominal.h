@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cablefit/core/diagnosis/shape_diagnosis.h"
 #include "cablefit/core/rod/rod_spec.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "shape_recording.h"
@@ -15,7 +16,7 @@ struct NominalBranches {
   /// One warm simulator per distinct equilibrium; the first is the one the recorded shape
   /// leads to.
   std::vector<RodSimulator> bases;
-  std::vector<std::string> names;       // how each was reached ("the recorded shape", ...)
+  std::vector<NominalStart> starts;     // how each was reached
   std::vector<double> reaction_moment;  // [N m] moment magnitude at every support (first)
 };
 

@@ -10,13 +10,6 @@
 namespace cablefit {
 namespace {
 
-std::string Mm(double metres) {
-  std::ostringstream os;
-  os.precision(metres < 1e-3 ? 2 : 3);
-  os << metres * 1e3 << " mm";
-  return os.str();
-}
-
 std::string Fixed(double v, int digits) {
   std::ostringstream os;
   os.setf(std::ios::fixed);
@@ -81,9 +74,11 @@ PreparedRecording PrepareRecording(const RodSpec& nominal, const ShapeObservatio
       obs.coverage.clear();
       for (auto it = recorded.coverage.rbegin(); it != recorded.coverage.rend(); ++it)
         obs.coverage.emplace_back(L - it->second, L - it->first);
-      out.notes.push_back(
-          "the recording runs from the last clamp to the first (its ends are " + Mm(forward) +
-          " from their clamps as listed, " + Mm(reverse) + " reversed); it was reversed");
+      DiagnosisNote note;
+      note.kind = DiagnosisNote::Kind::kRecordingReversed;
+      note.gap_as_listed = forward;
+      note.gap_reversed = reverse;
+      out.notes.push_back(note);
     }
   }
   const Reach reach = ReachExcess(nominal, obs.points);

@@ -21,7 +21,7 @@ struct PreparedRecording {
   Eigen::Matrix3Xd fit_points;   // 3 x n [m] the points the fits use (thinned)
   Eigen::VectorXd fit_s;         // n [m] their arc lengths
   Polyline initial;              // the clamps' own positions plus the recorded points
-  std::vector<std::string> notes;  // what was done to the recording
+  std::vector<DiagnosisNote> notes;  // what was done to the recording
 };
 
 /// Throws InvalidInput for fewer than 5 or non-finite points, RecordingMismatch for a

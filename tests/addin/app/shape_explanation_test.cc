@@ -81,5 +81,30 @@ TEST(ShapeExplanationTest, AnUnexplainedRecordingSaysWhatToCheck) {
   EXPECT_FALSE(Has(text, "hardly separates")) << text;
 }
 
+TEST(ShapeExplanationTest, EveryNoteIsASentenceWithItsFigures) {
+  DiagnosisNote reversed;
+  reversed.kind = DiagnosisNote::Kind::kRecordingReversed;
+  reversed.gap_as_listed = 0.412;
+  reversed.gap_reversed = 0.0003;
+  EXPECT_EQ(DescribeNote(reversed),
+            "the recording runs from the last clamp to the first (its ends are 412 mm from their "
+            "clamps as listed, 0.3 mm reversed); it was reversed");
+  DiagnosisNote held;
+  held.kind = DiagnosisNote::Kind::kFitDidNotHold;
+  held.effect = ShapeEffect::kSupportContact;
+  held.solved = false;
+  EXPECT_TRUE(Has(DescribeNote(held), "the support_contact fit did not hold"))
+      << DescribeNote(held);
+  EXPECT_TRUE(Has(DescribeNote(held), "(not solved)")) << DescribeNote(held);
+  DiagnosisNote branch;
+  branch.kind = DiagnosisNote::Kind::kFitFromOtherEquilibrium;
+  branch.effect = ShapeEffect::kTwistPreload;
+  branch.start = NominalStart::kMirroredSag;
+  EXPECT_TRUE(Has(DescribeNote(branch), "the twist_preload fit started from another equilibrium"))
+      << DescribeNote(branch);
+  EXPECT_TRUE(Has(DescribeNote(branch), "the recorded sag mirrored through the chord"))
+      << DescribeNote(branch);
+}
+
 }  // namespace
 }  // namespace cablefit::addin

@@ -215,7 +215,13 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
                 dg.adequacy.chi_square / dg.adequacy.limit,
                 out.clamp_ambiguous ? " clamp: the alternative" : out.clamp_right ? "" : " WRONG CLAMP",
                 dg.seconds);
-    for (const std::string& note : dg.notes) std::printf("          note: %s\n", note.c_str());
+    for (const DiagnosisNote& note : dg.notes) {
+      const char* what = note.kind == DiagnosisNote::Kind::kRecordingReversed ? "reversed"
+                         : note.kind == DiagnosisNote::Kind::kFitDidNotHold
+                             ? "did not hold"
+                             : "started from another equilibrium";
+      std::printf("          note: %s %s\n", ToString(note.effect), what);
+    }
     if (out.got != label) {  // how close the hidden effect came
       for (const EffectCandidate& c : dg.candidates)
         std::printf("          candidate %-24s bic %.1f\n", ToString(c.effect), c.bic);

@@ -82,6 +82,34 @@ struct ShapeAdequacy {
   double noise_allowance = 1.0;  // ShapeDiagnosisOptions::noise_allowance
 };
 
+/// How the nominal set-up was solved for the fits: the equilibrium each fit can start from.
+enum class NominalStart {
+  kRecordedShape,  // from the recording, joined to the clamps: the recording's own equilibrium
+  kSolverStart,    // from the clamps joined smoothly, loads continued
+  kMirroredSag,    // from the recorded sag mirrored through the chord
+};
+
+/// Something the diagnosis did to the recording or to a fit that a reader should know, as
+/// data; the application words it.
+struct DiagnosisNote {
+  enum class Kind {
+    /// The recording was listed from the last clamp to the first, and reversed.
+    kRecordingReversed,
+    /// `effect`'s fit did not hold in the accurate solve (it gave back most of its gain, or
+    /// `solved` is false); the next candidate was taken.
+    kFitDidNotHold,
+    /// The chosen fit (`effect`) started from another equilibrium of the nominal (`start`).
+    kFitFromOtherEquilibrium,
+  };
+  Kind kind = Kind::kRecordingReversed;
+  ShapeEffect effect = ShapeEffect::kNone;
+  bool solved = true;
+  NominalStart start = NominalStart::kRecordedShape;
+  /// [m] kRecordingReversed: the recording's ends' distances from their clamps, summed, as
+  /// listed and reversed.
+  double gap_as_listed = 0.0, gap_reversed = 0.0;
+};
+
 /// The diagnosis as data; the report layer words it for a person.
 struct ShapeDiagnosis {
   ShapeEffect effect = ShapeEffect::kNone;
@@ -90,7 +118,7 @@ struct ShapeDiagnosis {
   /// best candidate and `confidence` is low.
   bool explained = true;
   ShapeAdequacy adequacy;
-  std::vector<std::string> notes;  // what was done to the recording (e.g. reversed)
+  std::vector<DiagnosisNote> notes;                   // what was done to the recording and the fits
   std::optional<std::pair<double, double>> interval;  // [m]
   std::optional<int> clamp;
   std::map<std::string, double> parameters;   // spec names: curvature, angle, ratio, force, ...
