@@ -90,7 +90,7 @@ int RunDiagnose(const DiagnoseArgs& a) {
     return kExitUsage;
   }
   const int jobs = ResolveJobs(a.jobs, n);
-  // The cores the cases leave idle fit a case's candidate effects in parallel.
+  // The cores the cases leave idle run the starts of a case's fits (results do not depend on it).
   const int fit_threads =
       std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / std::max(jobs, 1));
   OutputFolder output(a.out_dir, a.paths);

@@ -189,7 +189,8 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   const NominalBranches branches = SolveNominalBranches(nominal, rec);
   progress(0.05, "nominal");
 
-  const std::vector<EffectModel> models = BuildEffectModels(nominal, branches.reaction_moment, ctx.points, ctx.s);
+  const std::vector<EffectModel> models =
+      BuildEffectModels(nominal, branches.reaction_moment, ctx.points, ctx.s);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
     fits.push_back(FitEffect(ctx, branches.bases, models[i], options.max_iterations,
