@@ -1,11 +1,11 @@
 #include "cablefit/app/batch_pool.h"
 
-#include "cablefit/core/base/errors.h"
-
 #include <algorithm>
-#include <atomic>
 #include <new>
 #include <thread>
+
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/parallel_for.h"
 
 namespace cablefit::addin {
 
@@ -17,27 +17,7 @@ int ResolveJobs(int requested, int items) {
 
 std::vector<std::exception_ptr> RunBatch(int items, int jobs,
                                          const std::function<void(int)>& work) {
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(items, 0)));
-  std::atomic<int> next{0};
-  auto worker = [&] {
-    for (int i = next++; i < items; i = next++) {
-      try {
-        work(i);
-      } catch (...) {
-        errors[static_cast<std::size_t>(i)] = std::current_exception();
-      }
-    }
-  };
-  const int threads = std::min(std::max(jobs, 1), std::max(items, 1));
-  if (threads <= 1) {
-    worker();
-    return errors;
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
-  return errors;
+  return ParallelForEach(items, jobs, work);
 }
 
 std::string ErrorText(const std::exception_ptr& e) {

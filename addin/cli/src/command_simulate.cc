@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/solver/rod_simulation.h"
@@ -23,6 +24,10 @@ struct SimulateArgs {
 };
 
 int RunSimulate(const SimulateArgs& a) {
+  SimulationOptions opt;
+  opt.accuracy = a.accuracy;
+  std::string why;
+  if (!opt.IsValid(&why)) throw InvalidInput("--accuracy: " + why);
   const RecordingCase rc = ReadRecordingCase(a.case_path);
   std::vector<std::string> inputs = {a.case_path, rc.case_file};
   for (const RecordingRef& r : rc.recordings) inputs.push_back(r.path);
@@ -35,8 +40,6 @@ int RunSimulate(const SimulateArgs& a) {
     initial = ReadCenterlineCsv(a.initial);
     if (initial.size() < 2) throw FileError(a.initial, "needs at least 2 points");
   }
-  SimulationOptions opt;
-  opt.accuracy = a.accuracy;
   RodSimulator sim(opt);
   SimulationResult r;
   try {

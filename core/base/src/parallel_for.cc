@@ -1,50 +1,77 @@
 #include "cablefit/core/base/parallel_for.h"
 
 #include <algorithm>
-#include <exception>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 #include "cablefit/core/base/cancellation.h"
 
 namespace cablefit {
+namespace {
 
-void ParallelFor(int n, int threads, const std::function<void(int)>& work) {
+enum class OnFailure { kStopStarting, kGoOn };
+
+std::vector<std::exception_ptr> Run(int n, int threads, const std::function<void(int)>& work,
+                                    OnFailure on_failure) {
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(n, 0)));
   const int workers = std::min(threads, n);
-  if (workers <= 1) {
-    for (int i = 0; i < n; ++i) work(i);
-    return;
-  }
   std::mutex mutex;
   int next = 0;
   bool failed = false;
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(n));
   const CancellationState parent = CurrentCancellation();
-  auto worker = [&] {
-    const CancellationScope scope(parent);
-    for (;;) {
-      int i;
-      {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (failed || next == n) return;
-        i = next++;
-      }
+  auto take = [&](int* i) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if ((failed && on_failure == OnFailure::kStopStarting) || next >= n) return false;
+    *i = next++;
+    return true;
+  };
+  auto record = [&](int i) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    errors[static_cast<std::size_t>(i)] = std::current_exception();
+    failed = true;
+  };
+  // The calling thread runs its items in its own scope, as a serial loop would.
+  auto own_share = [&] {
+    for (int i; take(&i);) {
       try {
         work(i);
       } catch (...) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        errors[static_cast<std::size_t>(i)] = std::current_exception();
-        failed = true;
+        record(i);
       }
     }
   };
+  auto worker = [&] {
+    for (int i; take(&i);) {
+      try {
+        const CancellationScope scope(parent);
+        work(i);
+      } catch (...) {
+        record(i);
+      }
+    }
+  };
+  if (workers <= 1) {
+    own_share();
+    return errors;
+  }
   std::vector<std::thread> pool;
+  pool.reserve(static_cast<std::size_t>(workers - 1));
   for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
-  worker();  // the calling thread takes its share
+  own_share();
   for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors)
+  return errors;
+}
+
+}  // namespace
+
+void ParallelFor(int n, int threads, const std::function<void(int)>& work) {
+  for (const std::exception_ptr& e : Run(n, threads, work, OnFailure::kStopStarting))
     if (e) std::rethrow_exception(e);
+}
+
+std::vector<std::exception_ptr> ParallelForEach(int n, int threads,
+                                                const std::function<void(int)>& work) {
+  return Run(n, threads, work, OnFailure::kGoOn);
 }
 
 }  // namespace cablefit

@@ -173,7 +173,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
                              const ShapeDiagnosisOptions& options) {
   const auto t0 = Clock::now();
   std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput("diagnosis options: " + why);
+  if (!options.IsValid(&why)) throw UsageError("diagnosis options: " + why);
   ValidateRodSpec(nominal);
   auto progress = [&](double f, const char* stage) {
     ReportProgress(options.progress, f, stage);

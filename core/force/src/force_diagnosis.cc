@@ -147,7 +147,7 @@ ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& t
                                   const ForceCurve& curve, const ForceDiagnosisOptions& options,
                                   const std::string& file) {
   std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput("force diagnosis options: " + why);
+  if (!options.IsValid(&why)) throw UsageError("force diagnosis options: " + why);
   // Bad data is a FileError naming the recording when the caller gave its name.
   const auto fail = [&](const std::string& problem) {
     if (file.empty()) throw InvalidInput("force curve: " + problem);

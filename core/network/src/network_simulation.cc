@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "cablefit/core/rod/initial_shape.h"
 #include "network_parts.h"
@@ -371,8 +372,31 @@ RodState DrawnNetworkState(const NetworkModel& net) {
   return st;
 }
 
+bool NetworkOptions::IsValid(std::string* why) const {
+  auto fail = [why](const char* m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (!(element_length > 0 && std::isfinite(element_length)))
+    return fail("element_length must be finite and > 0");
+  // Each refinement doubles the elements: 2^20 times a coarse mesh is beyond any memory.
+  if (refinement < 0 || refinement > 20) return fail("refinement must be in [0, 20]");
+  if (!(contact_tolerance > 0 && contact_tolerance < 1))
+    return fail("contact_tolerance must be in (0, 1)");
+  if (!(contact_gap >= 0 && contact_gap < 1)) return fail("contact_gap must be in [0, 1)");
+  if (max_contact_rounds < 1) return fail("max_contact_rounds must be >= 1");
+  return statics.IsValid(why);
+}
+
 NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  std::string why;
+  if (!options.IsValid(&why)) {
+    NetworkSolution rejected;
+    rejected.summary.termination = TerminationType::kInvalidOptions;
+    rejected.summary.message = "invalid network options: " + why;
+    return rejected;
+  }
   const NetworkModel base = CompileNetworkModel(spec, options.element_length, options.refinement);
   const NodeInfo info = NodeTable(base);
   const ObstacleField field(spec.obstacles);
@@ -381,7 +405,7 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   NetworkModel net = base;
   NetworkSolution sol;
   int iterations = 0, streak = 0, extra_release = 0, widest = 1 << 20;
-  for (int round = 0; round < std::max(1, options.max_contact_rounds); ++round) {
+  for (int round = 0; round < options.max_contact_rounds; ++round) {
     net = WithHolds(base, holds, info);
     FitStateToHolds(net, holds, &st);
     const RodState before = st;

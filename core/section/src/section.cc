@@ -108,7 +108,7 @@ void ValidateSection(const SectionSpec& spec) {
 SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& options) {
   ValidateSection(spec);
   std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput(why);
+  if (!options.IsValid(&why)) throw UsageError("section options: " + why);
   SectionResult r;
   const std::vector<Piece> pieces = Pieces(spec.parts);
   Vec2 first_moment = Vec2::Zero();  // 2 [N m], sum E_i A_i c_i

@@ -274,7 +274,7 @@ TorsionGridResult SolvePrandtlTorsionOnGrid(const SectionRegion& region, int cel
 
 TorsionResult SolvePrandtlTorsion(const SectionRegion& region, const TorsionOptions& options) {
   std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput(why);
+  if (!options.IsValid(&why)) throw UsageError("torsion options: " + why);
   TorsionResult r;
   for (int k = options.levels - 1; k >= 0; --k) {
     r.grids.push_back(SolvePrandtlTorsionOnGrid(region, options.finest_cells >> k));

@@ -50,13 +50,22 @@ bool SimulationOptions::IsValid(std::string* why) const {
   return statics.IsValid(why);
 }
 
-RodSimulator::RodSimulator(SimulationOptions options) : options_(std::move(options)) {
+RodSimulator::RodSimulator(SimulationOptions options) : options_(std::move(options)) {}
+
+bool RodSimulator::RejectInvalidOptions(SimulationResult* result) const {
   std::string why;
-  if (!options_.IsValid(&why)) throw InvalidInput("simulation options: " + why);
+  if (options_.IsValid(&why)) return false;
+  *result = SimulationResult{};
+  result->solution.summary.termination = TerminationType::kInvalidOptions;
+  result->solution.summary.message = "invalid simulation options: " + why;
+  result->estimated_error = std::numeric_limits<double>::infinity();
+  return true;
 }
 
 SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* initial) {
   const auto t0 = Clock::now();
+  SimulationResult rejected;
+  if (RejectInvalidOptions(&rejected)) return rejected;
   ValidateRodSpec(spec);
   models_.clear();
   states_.clear();
@@ -90,6 +99,8 @@ SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* ini
 SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
   CABLEFIT_REQUIRE(!states_.empty(), "Resimulate needs a previous Simulate");
   const auto t0 = Clock::now();
+  SimulationResult rejected;
+  if (RejectInvalidOptions(&rejected)) return rejected;
   ValidateRodSpec(spec);
   std::vector<StaticsSummary> summaries;
   // A changed layout (a point load moved, a support added) gets new spans of the same size.

@@ -418,7 +418,7 @@ Handle(TDocStd_Document) ReadDocument(const std::string& path, bool iges, std::s
 
 HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& options) {
   std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput("CAD read options: " + why);
+  if (!options.IsValid(&why)) throw UsageError("CAD read options: " + why);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw FileError(path, "no such file");
   if (std::filesystem::file_size(path, ec) == 0) throw FileError(path, "the file is empty");

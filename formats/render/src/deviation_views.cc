@@ -23,7 +23,7 @@ const Rgb kWhite{255, 255, 255};
 
 void Validate(const Scene& scene, const RenderOptions& options) {
   std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput("render options: " + why);
+  if (!options.IsValid(&why)) throw UsageError("render options: " + why);
   for (std::size_t i = 0; i < scene.tubes.size(); ++i) {
     const SceneTube& tube = scene.tubes[i];
     const std::string name = "tube " + std::to_string(i) + (tube.name.empty() ? "" : " '" + tube.name + "'");
@@ -33,7 +33,7 @@ void Validate(const Scene& scene, const RenderOptions& options) {
       throw InvalidInput(name + ": " + std::to_string(tube.deviation.size()) + " deviations for " +
                          std::to_string(tube.centreline.points.cols()) + " centre-line points");
   }
-  if (scene.colour_scale && !scene.colour_scale->IsValid(&why)) throw InvalidInput(why);
+  if (scene.colour_scale && !scene.colour_scale->IsValid(&why)) throw UsageError("colour scale: " + why);
 }
 
 ColourScale ScaleFor(const Scene& scene, const RenderOptions& options) {

@@ -40,5 +40,42 @@ TEST(ParallelFor, TheCallersTimeLimitHoldsInTheWorkers) {
   EXPECT_THROW(ParallelFor(8, 4, [](int) { CheckCancelled(); }), DeadlineExceeded);
 }
 
+TEST(ParallelForEach, EveryIndexRunsAndFailuresStayWithTheirIndex) {
+  for (int threads : {1, 4}) {
+    std::vector<int> calls(50, 0);
+    const std::vector<std::exception_ptr> errors = ParallelForEach(50, threads, [&](int i) {
+      ++calls[static_cast<size_t>(i)];
+      if (i % 9 == 2) throw std::runtime_error("item " + std::to_string(i));
+    });
+    ASSERT_EQ(errors.size(), 50u);
+    for (int i = 0; i < 50; ++i) {
+      EXPECT_EQ(calls[static_cast<size_t>(i)], 1) << i;
+      EXPECT_EQ(errors[static_cast<size_t>(i)] != nullptr, i % 9 == 2) << i;
+    }
+  }
+  EXPECT_TRUE(ParallelForEach(0, 3, [](int) { FAIL(); }).empty());
+}
+
+TEST(ParallelForEach, ACancelInsideOneItemDoesNotStopTheItemsAfterIt) {
+  for (int threads : {1, 3}) {
+    const std::vector<std::exception_ptr> errors = ParallelForEach(12, threads, [](int i) {
+      const CancellationScope item(60.0);
+      if (i % 4 == 1) RequestCancellation();
+      CheckCancelled();
+    });
+    for (int i = 0; i < 12; ++i)
+      EXPECT_EQ(errors[static_cast<size_t>(i)] != nullptr, i % 4 == 1) << threads << " " << i;
+  }
+}
+
+TEST(ParallelForEach, TheCallersTimeLimitHoldsInEveryItem) {
+  const CancellationScope deadline(1e-9);
+  const std::vector<std::exception_ptr> errors = ParallelForEach(6, 3, [](int) { CheckCancelled(); });
+  for (const std::exception_ptr& e : errors) {
+    ASSERT_NE(e, nullptr);
+    EXPECT_THROW(std::rethrow_exception(e), DeadlineExceeded);
+  }
+}
+
 }  // namespace
 }  // namespace cablefit

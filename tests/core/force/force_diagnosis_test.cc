@@ -206,7 +206,8 @@ TEST_F(ForceDiagnosisBadInput, InvalidOptions) {
   std::string why;
   EXPECT_FALSE(options.IsValid(&why));
   EXPECT_NE(why.find("offset_prior_fraction"), std::string::npos);
-  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, options), InvalidInput,
+  // Options come from code, not from the user's data: caller misuse, not InvalidInput.
+  EXPECT_THROW_WITH(DiagnoseForceCurve(rod_, test_, curve_, options), UsageError,
                     "offset_prior_fraction");
   EXPECT_TRUE(ForceDiagnosisOptions{}.IsValid(nullptr));
 }

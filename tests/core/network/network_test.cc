@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/rod/initial_shape.h"
@@ -139,6 +140,26 @@ TEST(Network, TwoBranchSpliceEqualsTheSingleRod) {
     worst = std::max(worst, (sol.branches[1].points.col(k) - r_single.col(offset + k)).norm());
   EXPECT_LT(worst, 1e-8);
   std::printf("splice vs single rod: max node distance %.3g m\n", worst);
+}
+
+TEST(Network, InvalidOptionsAreASummaryThatSaysWhy) {
+  for (auto broken : {+[](NetworkOptions* o) { o->element_length = 0.0; },
+                      +[](NetworkOptions* o) { o->element_length = std::nan(""); },
+                      +[](NetworkOptions* o) { o->refinement = -1; },
+                      +[](NetworkOptions* o) { o->contact_tolerance = 1.5; },
+                      +[](NetworkOptions* o) { o->max_contact_rounds = 0; },
+                      +[](NetworkOptions* o) { o->statics.max_iterations = 0; }}) {
+    NetworkOptions opt;
+    broken(&opt);
+    std::string why;
+    ASSERT_FALSE(opt.IsValid(&why));
+    const NetworkSolution sol = SolveNetwork(YJunction(0.3), opt);
+    EXPECT_EQ(sol.summary.termination, TerminationType::kInvalidOptions);
+    EXPECT_NE(sol.summary.message.find(why), std::string::npos) << sol.summary.message;
+    EXPECT_FALSE(sol.converged());
+    EXPECT_TRUE(sol.branches.empty());
+  }
+  EXPECT_TRUE(NetworkOptions{}.IsValid(nullptr));
 }
 
 TEST(Network, BrokenNetworksNameTheBranch) {

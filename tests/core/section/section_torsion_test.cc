@@ -98,11 +98,11 @@ TEST(SectionTorsionTest, RejectsInvalidOptions) {
   const std::vector<SectionPart> parts = {Disc(Vec2(0, 0), 1e-3, 0.0, 1e9, 1e9)};
   TorsionOptions options;
   options.levels = 1;
-  EXPECT_THROW_WITH(SolvePrandtlTorsion(CircularPartsRegion(parts), options), InvalidInput,
+  EXPECT_THROW_WITH(SolvePrandtlTorsion(CircularPartsRegion(parts), options), UsageError,
                     "levels");
   options.levels = 3;
   options.finest_cells = 16;
-  EXPECT_THROW_WITH(SolvePrandtlTorsion(CircularPartsRegion(parts), options), InvalidInput,
+  EXPECT_THROW_WITH(SolvePrandtlTorsion(CircularPartsRegion(parts), options), UsageError,
                     "finest_cells");
 }
 

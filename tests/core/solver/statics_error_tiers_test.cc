@@ -45,6 +45,29 @@ TEST(StaticsErrorTiers, InvalidOptionsAreASummaryNotAnAbort) {
   EXPECT_TRUE(state.q == before.q);  // nothing was solved
 }
 
+TEST(StaticsErrorTiers, ASimulatorWithInvalidOptionsSolvesNothingAndSaysWhy) {
+  SimulationOptions options;
+  options.min_levels = 4;
+  options.max_levels = 2;
+  std::string why;
+  ASSERT_FALSE(options.IsValid(&why));
+  RodSimulator sim(options);  // constructing is fine: the solve reports it
+  const SimulationResult r = sim.Simulate(SaggingRod());
+  EXPECT_EQ(r.solution.summary.termination, TerminationType::kInvalidOptions);
+  EXPECT_NE(r.solution.summary.message.find(why), std::string::npos) << r.solution.summary.message;
+  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.accuracy_met);
+  EXPECT_TRUE(r.level_elements.empty());
+  EXPECT_FALSE(sim.has_solution());
+
+  // Invalid statics options inside valid simulation options are reported the same way.
+  SimulationOptions inner;
+  inner.statics.max_iterations = 0;
+  const SimulationResult r2 = RodSimulator(inner).Simulate(SaggingRod());
+  EXPECT_EQ(r2.solution.summary.termination, TerminationType::kInvalidOptions);
+  EXPECT_FALSE(r2.converged);
+}
+
 TEST(StaticsErrorTiers, AProgressCallbackReturningFalseThrowsCancelled) {
   const RodSpec spec = SaggingRod();
   const RodModel model = CompileRodModel(spec);

@@ -147,7 +147,7 @@ TEST(DeviationViews, RejectsBadInput) {
   Scene scene = testing::SaggingCable{}.Build();
   RenderOptions options;
   options.width = 10;
-  EXPECT_THROW_WITH(RenderDeviationViews(scene, options), InvalidInput, "width");
+  EXPECT_THROW_WITH(RenderDeviationViews(scene, options), UsageError, "width");
   scene.tubes[0].deviation.resize(3);
   EXPECT_THROW_WITH(RenderDeviationViews(scene, RenderOptions{}), InvalidInput, "3 deviations");
   scene = testing::SaggingCable{}.Build();

@@ -1,5 +1,6 @@
-// A fixed pool of std::threads for `--jobs N` batch commands: runs independent work items
-// (cases, input files) in parallel, at most N at a time, in index order of starting.
+// `--jobs N` for the batch commands: independent work items (cases, input files) at most N at a
+// time, in index order of starting, on the core's pool (ParallelForEach), and one line per
+// failed item.
 #pragma once
 
 #include <exception>
@@ -13,10 +14,12 @@ namespace cablefit::addin {
 /// (at least 1); never more than `items` (and at least 1).
 int ResolveJobs(int requested, int items);
 
-/// Calls `work(i)` for every i in [0, items) on `jobs` threads (jobs <= 1: on the calling
-/// thread, in order). Items are taken in increasing i as workers become free. An exception
-/// escaping `work(i)` is stored at index i of the result (null where the item succeeded) and
-/// does not stop the other items. Work items must not share mutable state without locking.
+/// Calls `work(i)` for every i in [0, items) on `jobs` threads, the calling one included
+/// (jobs <= 1: on the calling thread, in order). Items are taken in increasing i as threads
+/// become free. An exception escaping `work(i)` is stored at index i of the result (null where
+/// the item succeeded) and does not stop the other items; a cancel inside one item (its own
+/// CancellationScope) does not cancel the next. Work items must not share mutable state
+/// without locking.
 std::vector<std::exception_ptr> RunBatch(int items, int jobs, const std::function<void(int)>& work);
 
 /// The one-line problem of an item's exception, one form per error tier: a FileError's problem

@@ -33,7 +33,8 @@ struct CadReadOptions {
 /// Reads a STEP (.step/.stp) or IGES (.iges/.igs) file with its assembly structure, names and
 /// colours. Edges and wires become cables (routes split at branch points), tube solids/shells
 /// become cables with a recovered centreline and diameter, other solids are kept as solids.
-/// Throws FileError(path, problem) for a missing, unreadable, empty or cable-less file.
+/// Throws FileError(path, problem) for a missing, unreadable, empty or cable-less file;
+/// UsageError for invalid options.
 HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& options = {});
 
 /// Writes `cables` as tubes (a circle swept along a B-spline through each relaxed centreline)

@@ -53,7 +53,7 @@ struct ViewLayout {
   int colour_bar_x = 0, colour_bar_y = 0, colour_bar_width = 0, colour_bar_height = 0;  // [px]
 };
 
-/// Layout of RenderDeviationViews. Throws InvalidInput when the options are invalid.
+/// Layout of RenderDeviationViews. Throws UsageError when the options are invalid.
 ViewLayout PlanDeviationViews(const Scene& scene, const RenderOptions& options);
 /// Layout of RenderSideBySide: one row per scene, same views, framing and colour scale.
 ViewLayout PlanSideBySide(const Scene& first, const Scene& second, const RenderOptions& options);

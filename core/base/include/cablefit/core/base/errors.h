@@ -5,7 +5,11 @@
 //    (a std::logic_error; CABLEFIT_REQUIRE): the caller has a bug, the process may go on;
 //  - bad data (a value, file or set-up from the user) throws InvalidInput;
 //  - a stopped run (user cancel, time limit) throws Cancelled (cancellation.h);
-//  - a solver that fails on valid input reports it in its Summary, it does not throw.
+//  - a solver that fails on valid input reports it in its Summary, it does not throw;
+//  - invalid Options (Options::IsValid) are reported as Ceres reports them: a solver that
+//    returns a Summary puts kInvalidOptions and the reason in it and solves nothing; an analysis
+//    without a Summary (a diagnosis, a section, a render) throws UsageError, because options
+//    come from code (the CLI checks the values a user gives before it builds them).
 // Each is caught once at the top of the CLI and printed as one line.
 #pragma once
 

@@ -145,7 +145,8 @@ class RecordingMismatch : public InvalidInput {
 
 /// Throws InvalidInput for an invalid spec, an empty observation, or a recording that cannot lie
 /// between the clamps (RecordingMismatch: points out of the cable's reach, wrong units, wrong case);
-/// SolverFailure when the nominal set-up cannot be solved; Cancelled when `progress` says stop.
+/// SolverFailure when the nominal set-up cannot be solved; Cancelled when `progress` says stop;
+/// UsageError for invalid options.
 ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& observation,
                              const ShapeDiagnosisOptions& options = {});
 

@@ -98,7 +98,7 @@ struct ForceDiagnosis {
 /// Diagnoses one recorded curve against the nominal rod and rig. Throws InvalidInput for too
 /// few rows, mismatched or non-finite columns, displacements outside the rig's geometry, a
 /// recorded response orders of magnitude from the nominal one (units, length, stiffness: not a
-/// catalogue effect), or invalid options. `file` only labels the result.
+/// catalogue effect); UsageError for invalid options. `file` only labels the result.
 ForceDiagnosis DiagnoseForceCurve(const RodSpec& nominal, const ForceTestSpec& test,
                                   const ForceCurve& curve,
                                   const ForceDiagnosisOptions& options = {},

@@ -27,6 +27,8 @@ struct NetworkOptions {
   /// falling onto it.
   double contact_gap = 0.002;
   int max_contact_rounds = 100;  // each round is a warm solve of a few Newton iterations
+
+  bool IsValid(std::string* why) const;
 };
 
 /// What branch b exerts on a junction's body, at the junction node (world frame).
@@ -60,7 +62,8 @@ struct NetworkSolution {
 };
 
 /// Compiles and solves `spec` starting from the drawn routes. Throws InvalidInput for an invalid
-/// spec; a solver failure is reported in the summary.
+/// spec; a solver failure is reported in the summary, and so are invalid options
+/// (TerminationType::kInvalidOptions, nothing solved).
 NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& options = {});
 
 /// The drawn shape of a compiled network as a solver state (supports start at the poses the

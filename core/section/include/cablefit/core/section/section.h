@@ -57,7 +57,7 @@ struct SectionResult {
 };
 
 /// Validates `spec`, then computes bending (exact, analytic over discs and annuli), mass and
-/// the bonded Prandtl torsion (numerical, `options`).
+/// the bonded Prandtl torsion (numerical, `options`; UsageError when they are invalid).
 SectionResult ComputeSection(const SectionSpec& spec, const TorsionOptions& options);
 
 /// Smallest circle enclosing every part's outer circle (for `outer_diameter` and for wrapping

@@ -114,7 +114,7 @@ class RectangleRegion : public SectionRegion {
 /// GJ of the bonded section `region` on one grid with `cells` cells across its bounding box.
 TorsionGridResult SolvePrandtlTorsionOnGrid(const SectionRegion& region, int cells);
 
-/// Refinement study over options.levels nested grids. Throws InvalidInput on invalid options.
+/// Refinement study over options.levels nested grids. Throws UsageError on invalid options.
 TorsionResult SolvePrandtlTorsion(const SectionRegion& region, const TorsionOptions& options);
 
 }  // namespace cablefit

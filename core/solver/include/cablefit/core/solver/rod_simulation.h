@@ -44,6 +44,8 @@ struct SimulationResult {
 
 class RodSimulator {
  public:
+  /// Invalid options are not an error here: like Ceres' Solve, every Simulate and Resimulate
+  /// then returns at once with TerminationType::kInvalidOptions and the reason in the summary.
   explicit RodSimulator(SimulationOptions options = {});
 
   /// Cold solve: chooses the resolution for the requested accuracy. `initial` (may be null) is
@@ -60,6 +62,7 @@ class RodSimulator {
 
  private:
   SimulationResult Finish(std::vector<StaticsSummary> summaries, double seconds);
+  bool RejectInvalidOptions(SimulationResult* result) const;
 
   SimulationOptions options_;
   std::vector<RodModel> models_;
