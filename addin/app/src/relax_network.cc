@@ -80,6 +80,11 @@ int CableIndex(const HarnessDrawing& d, const std::string& name, const std::stri
 }
 
 // Element frames (tangents only) of a node polyline, for the bend radius.
+// A network's levels are each solved from the drawing (contact sets and all), so each costs a
+// cold solve; the finest of four has 8x the elements of the first (at most ~12000 on a long
+// harness), and the estimate falls about 16x per level on smooth shapes.
+constexpr int kMaxNetworkLevels = 4;
+
 void FramesFromNodes(const Polyline& nodes, RodSolution* sol) {
   const int ne = nodes.size() - 1;
   sol->frame_s.resize(ne);
@@ -191,7 +196,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   }
   for (int k : group.obstacles) spec.obstacles.push_back({drawing.solids[k].name, drawing.solids[k].mesh});
 
-  // Two resolutions, extrapolated and estimated as a single cable is (SimulateNetwork).
+  // Refined until the estimate meets the accuracy, as a single cable is (SimulateNetwork).
   double total = 0.0, min_d = std::numeric_limits<double>::infinity();
   for (const BranchSpec& b : spec.branches) {
     total += b.length;
@@ -202,7 +207,8 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   opt.element_length = std::clamp(total / 1500, 0.002, 0.01);
   RefinementPlan plan;
   plan.accuracy = options.accuracy;
-  plan.min_levels = plan.max_levels = 2;
+  plan.min_levels = 2;
+  plan.max_levels = kMaxNetworkLevels;
   const NetworkSimulation sim = SimulateNetwork(spec, plan, opt);
   const NetworkSolution& fine = sim.finest;
   const bool converged = sim.converged;
@@ -218,6 +224,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
     res.solution.summary = fine.summary;
     res.solution.centerline = sim.centerlines[b];
     FramesFromNodes(fine.branches[b], &res.solution);
+    res.solution.internal_force = fine.internal_force[b];
     res.solution.twist_angle = std::numeric_limits<double>::quiet_NaN();
     size_t first = 0;
     for (int k = 0; k < b; ++k) first += spec.branches[k].supports.size();
@@ -240,6 +247,13 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
       if (c.branch >= 0 && c.branch < static_cast<int>(touching.size())) touching[c.branch] = 1;
     for (size_t b = 0; b < out.cables.size(); ++b)
       if (touching[b]) out.cables[b].setup.notes.push_back(note);
+  }
+  if (!sim.refinement_failure.empty()) {
+    const std::string note = "a finer discretisation than the " +
+                             std::to_string(sim.level_elements.back()) +
+                             " elements used did not converge (" + sim.refinement_failure +
+                             "), so the result comes from the coarser ones";
+    for (CableRelaxation& r : out.cables) r.setup.notes.push_back(note);
   }
   for (CableRelaxation& r : out.cables) {
     r.result.estimated_error = error;

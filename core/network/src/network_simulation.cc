@@ -322,6 +322,17 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   std::vector<Vec3> beyond(ext);
   for (auto it = m.node_order.rbegin(); it != m.node_order.rend(); ++it)
     if (m.node_parent[*it] >= 0) beyond[m.node_parent[*it]] += beyond[*it];
+  // Element k of a branch joins its nodes k and k+1; the part away from the anchor carries
+  // beyond[] of its first node, so the force of the larger-s part on the smaller-s one is that
+  // sum when the larger-s node is the child, and its opposite otherwise.
+  for (const internal::BranchLayout& lay : net.branches) {
+    Eigen::Matrix3Xd force(3, static_cast<int>(lay.nodes.size()) - 1);
+    for (int k = 0; k + 1 < static_cast<int>(lay.nodes.size()); ++k) {
+      const int a = lay.nodes[k], b = lay.nodes[k + 1];
+      force.col(k) = m.node_parent[b] == a ? beyond[b] : Vec3(-beyond[a]);
+    }
+    sol->internal_force.push_back(std::move(force));
+  }
   for (const internal::JunctionLayout& jl : net.junctions) {
     JunctionLoads jload;
     jload.branch = jl.branches;

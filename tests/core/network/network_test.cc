@@ -10,6 +10,7 @@
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/solver/statics_solver.h"
+#include "cablefit/core/solver/rod_solution.h"
 #include "network_test_util.h"
 #include "test_support.h"
 
@@ -88,6 +89,21 @@ TEST(Network, YJunctionIsSymmetricAndItsJunctionBalances) {
   for (const SupportReaction& r : sol.reactions) sum += r.force;
   EXPECT_NEAR(sum.z(), weight, 1e-10 * weight);
   for (const SupportReaction& r : sol.reactions) EXPECT_NEAR(r.force.z(), weight / 3, 1e-9 * weight);
+  // Internal forces: at the clamp the first element holds the clamp node (reaction plus its
+  // half element of weight) in balance; at the breakout the last one is what the junction
+  // pulls on the leg; the hanging legs are in tension all along.
+  ASSERT_EQ(sol.internal_force.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Matrix3Xd& n = sol.internal_force[k];
+    ASSERT_EQ(n.cols(), sol.branches[k].size() - 1);
+    const double h = length / n.cols();
+    const Vec3 first_node_weight(0, 0, -0.5 * h * 0.1 * 9.81);
+    EXPECT_LT((n.col(0) + sol.reactions[k].force + first_node_weight).norm(), 1e-10 * weight) << k;
+    EXPECT_LT((n.rightCols<1>() + j.force[k]).norm(), 1e-10 * weight) << k;
+    const Polyline& p = sol.branches[k];
+    for (int e = 0; e < n.cols(); ++e)
+      EXPECT_GT(n.col(e).dot(p.points.col(e + 1) - p.points.col(e)), 0.0) << k << " " << e;
+  }
 }
 
 // A junction joining only two collinear branches (a splice) is the rod it represents: the same
@@ -140,6 +156,14 @@ TEST(Network, TwoBranchSpliceEqualsTheSingleRod) {
     worst = std::max(worst, (sol.branches[1].points.col(k) - r_single.col(offset + k)).norm());
   EXPECT_LT(worst, 1e-8);
   std::printf("splice vs single rod: max node distance %.3g m\n", worst);
+  // The same internal forces element by element (the single rod's from its own extraction).
+  const Eigen::Matrix3Xd n_single = ExtractSolution(model, st, single).internal_force;
+  ASSERT_EQ(sol.internal_force.size(), 2u);
+  ASSERT_EQ(sol.internal_force[0].cols() + sol.internal_force[1].cols(), n_single.cols());
+  Eigen::Matrix3Xd n_net(3, n_single.cols());
+  n_net << sol.internal_force[0], sol.internal_force[1];
+  const double scale = n_single.colwise().norm().maxCoeff();
+  EXPECT_LT((n_net - n_single).colwise().norm().maxCoeff(), 1e-6 * scale);
 }
 
 TEST(Network, InvalidOptionsAreASummaryThatSaysWhy) {

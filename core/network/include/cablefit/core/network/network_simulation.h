@@ -52,6 +52,9 @@ struct ContactLoad {
 struct NetworkSolution {
   StaticsSummary summary;
   std::vector<Polyline> branches;          // per branch: node s [m] and positions [m]
+  /// Per branch: 3 x elements [N], the force of the part at larger s on the part at smaller s
+  /// (as RodSolution::internal_force; its component along the branch is the tension).
+  std::vector<Eigen::Matrix3Xd> internal_force;
   std::vector<SupportReaction> reactions;  // per spec support, branch by branch
   std::vector<JunctionLoads> junctions;
   std::vector<ContactLoad> contacts;

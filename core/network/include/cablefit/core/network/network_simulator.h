@@ -3,6 +3,7 @@
 // branches' centrelines Richardson-extrapolated and the same error estimate.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cablefit/core/network/network_simulation.h"
@@ -12,7 +13,7 @@ namespace cablefit {
 
 struct NetworkSimulation {
   /// The finest level solved, as solved (loads, contacts, junctions, summary: the failing
-  /// level's when one failed).
+  /// level's when one failed, except an optional finer level: see refinement_failure).
   NetworkSolution finest;
   /// Per branch: the extrapolated node centreline at the finest level's nodes (the finest
   /// level's own when fewer than two levels converged).
@@ -22,6 +23,9 @@ struct NetworkSimulation {
   int newton_iterations = 0;        // over all levels
   bool converged = false;           // every level converged
   bool accuracy_met = false;
+  /// Non-empty when a level beyond the plan's min_levels failed (why it failed): the result is
+  /// that of the levels before it, with their estimate.
+  std::string refinement_failure;
   double seconds = 0.0;
 };
 
