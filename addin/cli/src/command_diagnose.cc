@@ -177,7 +177,7 @@ void RegisterDiagnoseCommand(CLI::App& app, int* exit_code) {
                   "output folder: <case>/diagnosis.json, curves, report.html, and report.html")
       ->required();
   cmd->add_option("--jobs", args->jobs, "cases diagnosed in parallel (0 = one per core)")
-      ->check(CLI::Range(0, 1024))
+      ->check(JobCount())
       ->capture_default_str();
   cmd->add_option("--timeout", args->timeout,
                   "seconds one case may take; a case that takes longer is reported as failed "

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <string>
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/cancellation.h"
@@ -27,11 +28,33 @@ int CheckStandardOutput(const CLI::App& app, int exit_code) {
   return exit_code == kExitOk ? kExitSomeFailed : exit_code;
 }
 
+std::string CommandNames(CLI::App& app) {
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  return names;
+}
+
+bool IsCommand(CLI::App& app, const std::string& word) {
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+    if (sub->check_name(word)) return true;
+  return false;
+}
+
+// The help to point at after a usage error: the sub-command's when one was named.
+std::string HelpCommand(CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) return "cablefit " + sub->get_name() + " --help";
+  return "cablefit --help";
+}
+
 }  // namespace
 
 int RunCommandLine(int argc, char** argv) {
+  // Named here, not from argv[0], so that usage lines read "cablefit relax", wherever it lives.
   CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
-               "does not look like the real one"};
+               "does not look like the real one",
+               "cablefit"};
+  app.set_version_flag("--version", std::string("cablefit ") + CABLEFIT_VERSION);
   app.require_subcommand(1);
   int exit_code = kExitOk;
   RegisterSimulateCommand(app, &exit_code);
@@ -39,15 +62,29 @@ int RunCommandLine(int argc, char** argv) {
   RegisterRelaxCommand(app, &exit_code);
   RegisterSectionCommand(app, &exit_code);
   RegisterBenchCommand(app, &exit_code);
+  // A first word that is no option and no command: say so, instead of CLI11's "a subcommand is
+  // required"; "help" is what people type.
+  if (argc > 1 && argv[1][0] != '-' && !IsCommand(app, argv[1])) {
+    if (std::string(argv[1]) == "help") {
+      std::fputs(app.help().c_str(), stdout);
+      return kExitOk;
+    }
+    std::fprintf(stderr, "cablefit: unknown command '%s' (the commands are %s)\n",
+                 TerminalSafe(argv[1]).c_str(), CommandNames(app).c_str());
+    std::fprintf(stderr, "run 'cablefit --help' for usage\n");
+    return kExitUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
-    std::fprintf(stderr, "run 'cablefit --help' for usage\n");
+    std::fprintf(stderr, "run '%s' for usage\n", HelpCommand(app).c_str());
     return kExitUsage;
   } catch (const InvalidInput& e) {
     // Typed user-input errors arrive here as one line "<file>: <problem>".

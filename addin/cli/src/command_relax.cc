@@ -332,7 +332,7 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
       ->required();
   cmd->add_option("--config", args->config, "harness.json: materials, supports, gravity per cable");
   cmd->add_option("--jobs", args->jobs, "parallel workers (0 = one per core)")
-      ->check(CLI::Range(0, 1024))
+      ->check(JobCount())
       ->capture_default_str();
   cmd->add_option("--timeout", args->timeout,
                   "seconds one cable may take to relax; a cable that takes longer is reported "
@@ -344,7 +344,8 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--accuracy", args->accuracy, "requested accuracy of relaxed positions [m]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_flag("!--no-pictures", args->pictures, "skip the deviation pictures");
+  cmd->add_flag_callback("--no-pictures", [args] { args->pictures = false; },
+                         "skip the deviation pictures");
   cmd->add_flag("--close-ups", args->close_ups,
                 "also one picture per cable: <stem>-<cable>-deviation.png");
   cmd->callback([args, exit_code] { *exit_code = RunRelax(*args); });

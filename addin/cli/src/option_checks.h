@@ -24,4 +24,18 @@ inline CLI::Validator TimeoutSeconds() {
       "SECONDS");
 }
 
+/// A worker count: a whole number from 0 (one per core) to 1024.
+inline CLI::Validator JobCount() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const long v = std::strtol(text.c_str(), &end, 10);
+        if (end == text.c_str() || *end != '\0' || v < 0 || v > 1024) {
+          return "must be a whole number from 0 (one per core) to 1024, got '" + text + "'";
+        }
+        return {};
+      },
+      "N");
+}
+
 }  // namespace cablefit::addin

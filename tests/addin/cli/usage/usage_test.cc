@@ -1,0 +1,58 @@
+// The command line itself: version, help, unknown commands and malformed options each get one
+// clear answer and the exit code of cli-v1 (0 done, 2 usage error).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_runner.h"
+
+namespace cablefit {
+namespace {
+
+using testing::RunCablefit;
+
+bool Has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(Usage, VersionPrintsTheNameAndVersion) {
+  const auto run = RunCablefit("--version");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out.rfind("cablefit ", 0), 0u) << run.out;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+}
+
+TEST(Usage, HelpAsACommandPrintsTheHelp) {
+  const auto run = RunCablefit("help");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(Has(run.out, "Usage: cablefit")) << run.out;
+  for (const char* command : {"diagnose", "relax", "simulate", "section", "bench"})
+    EXPECT_TRUE(Has(run.out, command)) << command;
+}
+
+TEST(Usage, AnUnknownCommandIsNamedWithTheKnownOnes) {
+  const auto run = RunCablefit("frobnicate --out x");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(Has(run.err, "cablefit: unknown command 'frobnicate'")) << run.err;
+  EXPECT_TRUE(Has(run.err, "diagnose, relax")) << run.err;
+}
+
+TEST(Usage, AMalformedOptionPointsToItsCommandsHelp) {
+  for (const std::string& command : {std::string("relax"), std::string("diagnose")}) {
+    const auto run = RunCablefit(command + " some-input --out /nonexistent/x --jobs abc");
+    EXPECT_EQ(run.exit_code, 2) << command;
+    EXPECT_TRUE(Has(run.err, "--jobs: must be a whole number from 0 (one per core) to 1024, got 'abc'"))
+        << run.err;
+    EXPECT_TRUE(Has(run.err, "run 'cablefit " + command + " --help' for usage")) << run.err;
+  }
+}
+
+TEST(Usage, HelpNamesTheProgramNotItsPath) {
+  const auto run = RunCablefit("relax --help");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_TRUE(Has(run.out, "Usage: cablefit relax")) << run.out;
+  EXPECT_FALSE(Has(run.out, "{false}")) << run.out;
+}
+
+}  // namespace
+}  // namespace cablefit
