@@ -253,6 +253,10 @@ std::string HarnessConfig::RigidReason(const std::string& name) const {
 HarnessConfig ReadHarnessConfig(const std::string& path) {
   const Json root = json::ReadJsonFile(path);
   if (!root.is_object()) throw FileError(path, "must hold a JSON object");
+  if (root.contains("recordings") && root.contains("cable")) {
+    throw FileError(path, "is a recording case (case.json), not a harness.json: recording cases go "
+                          "to 'cablefit diagnose'");
+  }
   const FieldReader r(root, path);
   RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
                        "junctions", "junction_defaults", "rigid", "only", "note"});

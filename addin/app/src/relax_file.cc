@@ -10,6 +10,7 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/cad_file.h"
+#include "cablefit/formats/file_kind.h"
 #include "cablefit/formats/mesh_file.h"
 #include "relax_route.h"
 
@@ -50,9 +51,19 @@ double UnitInMetres(const std::string& name) {
 
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   if (IsCadPath(path)) return ReadCadFile(path);
+  const FileKind kind = SniffFileKind(path);
+  if (kind == FileKind::kJson) {
+    throw FileError(path, "is a JSON file, not CAD or a mesh: a recording case goes to 'cablefit "
+                          "diagnose', a harness.json to 'cablefit relax --config'");
+  }
   if (!IsMeshPath(path)) {
     throw FileError(path,
                     "unknown extension (expected STEP, IGES or a mesh: STL, OBJ, PLY, glTF...)");
+  }
+  if (kind == FileKind::kPlyPoints) {
+    throw FileError(path, "is a PLY point cloud (no faces), not a mesh: relax needs tube surfaces; "
+                          "a scan is diagnosed through the case.json that lists it ('cablefit "
+                          "diagnose')");
   }
   const std::vector<MeshTube> tubes = ReadMeshFile(path, mesh_unit);
   if (tubes.empty()) throw FileError(path, "no tube found in the mesh");

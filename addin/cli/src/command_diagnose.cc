@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "cablefit/app/batch_pool.h"
@@ -15,6 +16,7 @@
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/case_reader.h"
+#include "cablefit/formats/file_kind.h"
 #include "cablefit/app/diagnose_case.h"
 #include "cablefit/app/diagnose_output.h"
 #include "option_checks.h"
@@ -48,12 +50,27 @@ std::vector<std::string> CaseFolders(const CaseFileList& list) {
   return UniqueNames(folders, {"report.html"});
 }
 
+/// `line` about `path`, with where the file belongs when it is CAD or a mesh (given to diagnose
+/// instead of relax).
+std::string WithWhereItBelongs(const std::string& path, const std::string& line) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return line;
+  switch (SniffFileKind(path)) {
+    case FileKind::kStep:
+    case FileKind::kIges:
+    case FileKind::kStl:
+    case FileKind::kObj:
+    case FileKind::kPlyMesh: return line + "; CAD files and meshes go to 'cablefit relax'";
+    default: return line;
+  }
+}
+
 /// One line "<file>: <problem>" for any exception from one case.
 std::string ErrorLine(const std::exception_ptr& error, const std::string& file) {
   try {
     std::rethrow_exception(error);
   } catch (const FileError& e) {
-    return e.what();
+    return WithWhereItBelongs(file, e.what());
   } catch (...) {
     return file + ": " + ErrorText(std::current_exception());
   }
@@ -74,8 +91,8 @@ int RunDiagnose(const DiagnoseArgs& a) {
       FindCaseFiles({p});
       good_paths.push_back(p);
     } catch (const FileError& e) {
-      failures.push_back(e.what());
-      std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
+      failures.push_back(WithWhereItBelongs(p, e.what()));
+      std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(failures.back()).c_str());
     }
   }
   CaseFileList list;

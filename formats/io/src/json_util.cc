@@ -9,6 +9,7 @@
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/atomic_file.h"
+#include "cablefit/formats/file_kind.h"
 #include "cablefit/formats/input_file.h"
 #include "cablefit/formats/number_text.h"
 
@@ -43,6 +44,10 @@ Json ReadJsonFile(const std::string& path) {
     const auto tag_end = message.find("] ");
     if (message.rfind("[json.exception", 0) == 0 && tag_end != std::string::npos)
       message = message.substr(tag_end + 2);
+    // A file of another kind says what it is rather than where the JSON parser gave up.
+    const FileKind kind = SniffFileKind(path);
+    if (kind != FileKind::kUnknown && kind != FileKind::kJson)
+      throw FileError(path, "not JSON: it is " + DescribeFileKind(kind));
     throw FileError(path, "not valid JSON: " + message);
   }
 }

@@ -5,10 +5,12 @@
 #include <string>
 
 #include "cli_runner.h"
+#include "test_support.h"
 
 namespace cablefit {
 namespace {
 
+using testing::Q;
 using testing::RunCablefit;
 
 bool Has(const std::string& text, const std::string& part) {
@@ -52,6 +54,30 @@ TEST(Usage, HelpNamesTheProgramNotItsPath) {
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_TRUE(Has(run.out, "Usage: cablefit relax")) << run.out;
   EXPECT_FALSE(Has(run.out, "{false}")) << run.out;
+}
+
+// A file given to the wrong command says what it is and where it belongs.
+TEST(Usage, AFileForAnotherCommandSaysWhereItBelongs) {
+  const auto src = testing::SourceDir();
+  const std::string step = Q(src / "samples/harness/legacy_harness.step");
+  const std::string case_dir = "tests/data/cases/public/sample-none/";
+  const auto out = testing::FreshTempDir("usage_wrong_command");
+
+  auto diagnose = RunCablefit("diagnose " + step + " --out " + Q(out / "d"));
+  EXPECT_EQ(diagnose.exit_code, 2);
+  EXPECT_TRUE(Has(diagnose.err, "it is a STEP file; CAD files and meshes go to 'cablefit relax'"))
+      << diagnose.err;
+
+  auto relax = RunCablefit("relax " + Q(src / (case_dir + "scan.ply")) + " " +
+                           Q(src / (case_dir + "case.json")) + " --out " + Q(out / "r"));
+  EXPECT_EQ(relax.exit_code, 2);
+  EXPECT_TRUE(Has(relax.err, "is a PLY point cloud (no faces), not a mesh")) << relax.err;
+  EXPECT_TRUE(Has(relax.err, "is a JSON file, not CAD or a mesh")) << relax.err;
+
+  auto config = RunCablefit("relax " + step + " --config " + Q(src / (case_dir + "case.json")) +
+                            " --out " + Q(out / "c"));
+  EXPECT_EQ(config.exit_code, 2);
+  EXPECT_TRUE(Has(config.err, "is a recording case (case.json), not a harness.json")) << config.err;
 }
 
 }  // namespace
