@@ -14,7 +14,7 @@ OUT=${OUT:-demo-out}
 mkdir -p "$OUT"
 status=0
 "$CABLEFIT" diagnose samples/cases --out "$OUT/diagnose" || status=$?
-"$CABLEFIT" relax samples/harness --out "$OUT/relax" || status=$?
+"$CABLEFIT" relax samples/harness --config samples/harness/harness.json --out "$OUT/relax" || status=$?
 "$CABLEFIT" section samples/materials/examples/mixed-filled.json --out "$OUT/section.json" || status=$?
 "$CABLEFIT" simulate samples/cases/sample-none --out "$OUT/simulate" || status=$?
 "$CABLEFIT" bench --repeat 5

@@ -203,8 +203,14 @@ void Overlay(std::optional<T>* base, const std::optional<T>& top) {
 
 }  // namespace
 
+double CableConfig::DiameterFor(double drawn_diameter) const {
+  if (diameter && !(diameter_from_default && drawn_diameter > 0)) return *diameter;
+  return drawn_diameter > 0 ? drawn_diameter : 0.0;
+}
+
 CableConfig HarnessConfig::For(const std::string& name) const {
   CableConfig c = defaults;
+  c.diameter_from_default = c.diameter.has_value();
   const auto it = cables.find(name);
   if (it == cables.end()) return c;
   const CableConfig& top = it->second;
@@ -212,6 +218,7 @@ CableConfig HarnessConfig::For(const std::string& name) const {
     c.material = top.material;
     c.material_source = top.material_source;
   }
+  if (top.diameter) c.diameter_from_default = false;
   Overlay(&c.diameter, top.diameter);
   Overlay(&c.length, top.length);
   Overlay(&c.gravity, top.gravity);

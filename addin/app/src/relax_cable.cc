@@ -96,8 +96,7 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   const double length = route.s[route.size() - 1];
   const double built_length = cc.length ? cc.length->For(length) : length;
 
-  double diameter = drawn.diameter;
-  if (cc.diameter) diameter = *cc.diameter;
+  double diameter = cc.DiameterFor(drawn.diameter);
   if (!(diameter > 0)) {
     diameter = kDefaultDiameter;
     out.diameter_defaulted = true;

@@ -90,9 +90,8 @@ double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& conf
   const auto& relaxed = f.cables[static_cast<size_t>(cable)];
   if (relaxed) return relaxed->setup.spec.material.diameter;
   const DrawnCable& drawn = f.drawing.cables[static_cast<size_t>(cable)];
-  const CableConfig cc = config.For(drawn.name);
-  if (cc.diameter) return *cc.diameter;
-  return drawn.diameter > 0 ? drawn.diameter : kDefaultDiameter;
+  const double diameter = config.For(drawn.name).DiameterFor(drawn.diameter);
+  return diameter > 0 ? diameter : kDefaultDiameter;
 }
 
 namespace {

@@ -62,7 +62,7 @@ Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only =
     tube.name = drawn.name;
     tube.radius = 0.5 * OutputDiameter(f, static_cast<int>(i), config);
     SceneGhost ghost;
-    ghost.name = drawn.name + " (drawn)";
+    ghost.name = "drawn route";  // the legend's label for every grey line
     ghost.points = drawn.centreline.points;
     scene.ghosts.push_back(ghost);
     if (const auto& r = f.cables[i]) {

@@ -22,7 +22,6 @@
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESCAFControl_Writer.hxx>
 #include <Interface_Static.hxx>
-#include <STEPCAFControl_Reader.hxx>
 #include <StlAPI_Writer.hxx>
 #include <TDataStd_Name.hxx>
 #include <TopoDS_Compound.hxx>
@@ -112,15 +111,21 @@ void AddPart(const Handle(TDocStd_Document)& doc, const TDF_Label& assembly,
   TDataStd_Name::Set(instance, TCollection_ExtendedString(name.c_str(), true));
 }
 
-void WriteHarness(const std::string& path) {
+// The harness with the bundle's three cables as an assembly (STEP) or as top-level parts: OCCT's
+// IGES writer drops the names of assembly components, and IGES exporters of harness tools write
+// each part as a named top-level entity.
+Handle(TDocStd_Document) HarnessDocument(bool bundle_as_assembly) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  const TDF_Label bundle = shapes->NewShape();
-  TDataStd_Name::Set(bundle, "bundle");
+  TDF_Label bundle;
+  if (bundle_as_assembly) {
+    bundle = shapes->NewShape();
+    TDataStd_Name::Set(bundle, "bundle");
+  }
   AddPart(doc, bundle, Trunk(), "trunk", {0.9, 0.1, 0.1});
   AddPart(doc, bundle, BranchA(), "branch_a", {0.1, 0.6, 0.1});
   AddPart(doc, bundle, BranchB(), "branch_b", {0.1, 0.2, 0.8});
-  shapes->UpdateAssemblies();
+  if (bundle_as_assembly) shapes->UpdateAssemblies();
   AddPart(doc, TDF_Label(), SensorCable(), "sensor_cable", {1.0, 0.8, 0.0});
   AddPart(doc, TDF_Label(), Hose(), "hose", {0.2, 0.2, 0.2});
   // A 20 mm box centred on branch_a's second control point, a ring around sensor_cable.
@@ -129,18 +134,16 @@ void WriteHarness(const std::string& path) {
   AddPart(doc, TDF_Label(),
           BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(0, 100, 0), gp_Dir(1, 0.33, 0)), 8, 2).Shape(),
           "clip_ring", {0.6, 0.3, 0.0});
-  WriteStepAtomically(doc, path, "AP214IS");
+  return doc;
+}
+
+void WriteHarness(const std::string& path) {
+  WriteStepAtomically(HarnessDocument(true), path, "AP214IS");
 }
 
 // The same drawing as IGES 5.3 with B-rep solids (the other legacy exchange format).
-void WriteHarnessIges(const std::string& step_path, const std::string& path) {
-  Handle(TDocStd_Document) doc = NewXcafDocument();
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  reader.SetColorMode(true);
-  if (reader.ReadFile(step_path.c_str()) != IFSelect_RetDone || !reader.Transfer(doc)) {
-    throw FileError(step_path, "could not re-read the sample");
-  }
+void WriteHarnessIges(const std::string& path) {
+  Handle(TDocStd_Document) doc = HarnessDocument(false);
   Interface_Static::SetIVal("write.iges.brep.mode", 1);
   Interface_Static::SetCVal("write.iges.unit", "MM");
   IGESCAFControl_Writer writer;
@@ -211,8 +214,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(dir);
     cablefit::InitOcctSession();
     cablefit::WriteHarness((dir / "legacy_harness.step").string());
-    cablefit::WriteHarnessIges((dir / "legacy_harness.step").string(),
-                               (dir / "legacy_harness.igs").string());
+    cablefit::WriteHarnessIges((dir / "legacy_harness.igs").string());
     cablefit::WriteBentTubes((dir / "bent_tubes.stl").string());
     cablefit::WriteBranchedTubes((dir / "branched_tubes.stl").string());
   } catch (const std::exception& e) {

@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "curve_distance.h"
@@ -165,6 +168,15 @@ TEST(CadFile, SampleHarnessAsIgesHasTheSameCablesAndSolids) {
   for (const auto& c : step.cables) step_length += c.centreline.ChordLength();
   for (const auto& c : iges.cables) iges_length += c.centreline.ChordLength();
   EXPECT_NEAR(iges_length, step_length, 1e-4);
+  // IGES names (406 name properties) are read as STEP's product names are.
+  auto names = [](const HarnessDrawing& h) {
+    std::vector<std::string> out;
+    for (const auto& c : h.cables) out.push_back(c.name);
+    for (const auto& s : h.solids) out.push_back(s.name);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_EQ(names(iges), names(step));
 }
 
 TEST(CadFile, HonoursTheFileLengthUnit) {

@@ -529,6 +529,9 @@ TEST(RelaxCli, SampleSidecarAppliesToTheSampleHarness) {
   EXPECT_TRUE(CableNamed(j, "branch_a").at("material").at("defaulted").get<bool>());
   EXPECT_FALSE(CableNamed(j, "branch_a").at("diameter_defaulted").get<bool>());  // "default" block
   EXPECT_NEAR(CableNamed(j, "trunk").at("diameter").get<double>(), 0.012, 1e-12);
+  EXPECT_NEAR(CableNamed(j, "branch_a").at("diameter").get<double>(), 0.008, 1e-12);
+  // The hose is a 12 mm tube solid: the "default" diameter is for bare curves, not for it.
+  EXPECT_NEAR(CableNamed(j, "hose").at("diameter").get<double>(), 0.012, 1e-6);
   const Json& end = CableNamed(j, "sensor_cable").at("supports").back();
   EXPECT_EQ(end.at("kind"), "clip");
   EXPECT_TRUE(end.at("sliding").get<bool>());

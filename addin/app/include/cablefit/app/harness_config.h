@@ -42,12 +42,19 @@ struct CableConfig {
   /// Rod material without diameter; unset -> derived from the diameter (see relax_material.h).
   std::optional<MaterialSpec> material;
   std::string material_source;     ///< "harness.json", or the section file it came from
-  std::optional<double> diameter;  ///< [m] overrides the drawn diameter
+  /// [m] a cable's own overrides the drawn diameter; one from "default" only fills in for a
+  /// cable drawn without one (a bare curve), since the CAD solid's diameter is a measurement.
+  std::optional<double> diameter;
+  bool diameter_from_default = false;
   std::optional<CableLength> length;
   std::optional<Vec3> gravity;     ///< [m/s^2]
   std::optional<EndConfig> start, end;
   std::vector<ExtraSupportConfig> supports;
   std::optional<bool> auto_clips;  ///< add a clip where the route passes a solid (default on)
+
+  /// [m] the diameter a cable drawn with `drawn_diameter` (0: none) is relaxed with; 0 when
+  /// neither the drawing nor harness.json gives one.
+  double DiameterFor(double drawn_diameter) const;
 };
 
 /// A breakout or splice declared in harness.json: the listed cable ends are joined (whether or
