@@ -7,6 +7,7 @@
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/formats/force_curve_csv.h"
 #include "cablefit/formats/json_util.h"
+#include "cablefit/app/provenance.h"
 
 namespace cablefit::addin {
 namespace {
@@ -76,6 +77,9 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
                      {"limit_999", json::NumberOrNull(a.limit)}};
   }
   if (!d.notes.empty()) j["notes"] = d.notes;
+  std::vector<std::pair<std::string, std::string>> inputs = {{"case", d.recording.case_file}};
+  for (const RecordingRef& r : d.recording.recordings) inputs.emplace_back(ToString(r.kind), r.path);
+  j["provenance"] = ProvenanceJson(inputs);
   return j;
 }
 

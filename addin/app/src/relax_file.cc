@@ -11,6 +11,7 @@
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/file_kind.h"
+#include "cablefit/app/provenance.h"
 #include "cablefit/formats/mesh_file.h"
 #include "relax_route.h"
 
@@ -162,6 +163,7 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   j["input"] = f.input;
   j["length_unit_of_input"] = f.drawing.length_unit;
   j["config"] = config.path.empty() ? json::Json() : json::Json(config.path);
+  j["provenance"] = ProvenanceJson({{"input", f.input}, {"config", config.path}});
   j["min_bend_radius_factor"] = config.min_bend_radius_factor;
   j["not_cables"] = f.drawing.skipped;  // what the input drew that was not taken as a cable, and why
   if (!f.networks.empty()) {

@@ -12,6 +12,7 @@
 
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
+#include "cablefit/formats/file_digest.h"
 #include "cablefit/formats/force_curve_csv.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/formats/truth_reader.h"
@@ -62,6 +63,16 @@ void CheckDiagnosisJson(const json::Json& j, const RecordingCase& rc) {
   for (const auto& [name, value] : j.at("parameters").items()) {
     EXPECT_TRUE(value.is_number() || (value.is_array() && value.size() == 3)) << name;
   }
+  // Provenance: the case file and every recording, each with the SHA-256 of its bytes.
+  const json::Json& inputs = j.at("provenance").at("inputs");
+  ASSERT_EQ(inputs.size(), rc.recordings.size() + 1);
+  EXPECT_EQ(inputs[0].at("role"), "case");
+  EXPECT_EQ(inputs[0].at("sha256"), FileSha256(rc.case_file));
+  for (size_t k = 0; k < rc.recordings.size(); ++k) {
+    EXPECT_EQ(inputs[k + 1].at("role"), ToString(rc.recordings[k].kind));
+    EXPECT_EQ(inputs[k + 1].at("sha256"), FileSha256(rc.recordings[k].path));
+  }
+  EXPECT_EQ(j.at("provenance").at("tool").get<std::string>().rfind("cablefit ", 0), 0u);
   for (const char* which : {"baseline", "fitted"}) {
     ASSERT_TRUE(j.at(which).at("max_deviation").is_number()) << which;
     ASSERT_TRUE(j.at(which).at("rms_deviation").is_number()) << which;
@@ -78,13 +89,14 @@ void CheckDiagnosisJson(const json::Json& j, const RecordingCase& rc) {
     EXPECT_GE(candidates[i - 1].at("score").get<double>(), candidates[i].at("score").get<double>());
   ASSERT_TRUE(j.at("explained").is_boolean());
   // The spec's twelve fields, plus only the documented additions (the adequacy test behind
-  // `explained`, notes on what was done to the recording).
+  // `explained`, notes on what was done to the recording, the provenance of the inputs).
   const std::set<std::string> spec = {"format",     "case",     "effect",    "confidence",
                                       "interval",   "clamp",    "parameters", "baseline",
                                       "fitted",     "explained", "explanation", "candidates"};
   for (const std::string& key : spec) EXPECT_TRUE(j.contains(key)) << key;
   for (const auto& [key, value] : j.items())
-    EXPECT_TRUE(spec.count(key) || key == "adequacy" || key == "notes") << key;
+    EXPECT_TRUE(spec.count(key) || key == "adequacy" || key == "notes" || key == "provenance")
+        << key;
 }
 
 // The public cases, or under sanitizers the force cases and every fourth shape case (linked into

@@ -15,6 +15,7 @@
 #include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/cad_file.h"
+#include "cablefit/formats/file_digest.h"
 #include "cablefit/formats/json_util.h"
 #include "cli_runner.h"
 #include "relax_test_util.h"
@@ -530,6 +531,13 @@ TEST(RelaxCli, SampleSidecarAppliesToTheSampleHarness) {
   EXPECT_FALSE(CableNamed(j, "branch_a").at("diameter_defaulted").get<bool>());  // "default" block
   EXPECT_NEAR(CableNamed(j, "trunk").at("diameter").get<double>(), 0.012, 1e-12);
   EXPECT_NEAR(CableNamed(j, "branch_a").at("diameter").get<double>(), 0.008, 1e-12);
+  // Provenance: the CAD file and the config, each with the SHA-256 of its bytes.
+  const Json& inputs = j.at("provenance").at("inputs");
+  ASSERT_EQ(inputs.size(), 2u);
+  EXPECT_EQ(inputs[0].at("role"), "input");
+  EXPECT_EQ(inputs[0].at("sha256"), FileSha256(Sample("legacy_harness.step").string()));
+  EXPECT_EQ(inputs[1].at("role"), "config");
+  EXPECT_EQ(inputs[1].at("sha256"), FileSha256(Sample("harness.json").string()));
   // The hose is a 12 mm tube solid: the "default" diameter is for bare curves, not for it.
   EXPECT_NEAR(CableNamed(j, "hose").at("diameter").get<double>(), 0.012, 1e-6);
   const Json& end = CableNamed(j, "sensor_cable").at("supports").back();

@@ -1,0 +1,35 @@
+#include "cablefit/formats/file_digest.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "cablefit/core/base/errors.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+std::string Write(const std::string& name, const std::string& bytes) {
+  const auto path = (testing::FreshTempDir("file_digest") / name).string();
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+// The FIPS 180-2 test vectors: the empty message, "abc", and one longer than a read buffer.
+TEST(FileDigest, Sha256OfKnownMessages) {
+  EXPECT_EQ(FileSha256(Write("empty", "")),
+            "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(FileSha256(Write("abc", "abc")),
+            "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(FileSha256(Write("million", std::string(1000000, 'a'))),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(FileDigest, AMissingFileIsAFileError) {
+  EXPECT_THROW(FileSha256("/nonexistent/cablefit/file.step"), FileError);
+}
+
+}  // namespace
+}  // namespace cablefit
