@@ -3,18 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <fstream>
 #include <string>
 
+#include "io_test_files.h"
 #include "test_support.h"
 
 namespace cablefit {
 namespace {
 
 std::string Write(const std::string& name, const std::string& bytes) {
-  const auto path = (testing::FreshTempDir("file_kind") / name).string();
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
+  return testing::WriteTempFile("file_kind", name, bytes);
 }
 
 TEST(FileKind, TheSamplesAreKnownByTheirContent) {

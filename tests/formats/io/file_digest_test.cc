@@ -2,19 +2,17 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <string>
 
 #include "cablefit/core/base/errors.h"
+#include "io_test_files.h"
 #include "test_support.h"
 
 namespace cablefit {
 namespace {
 
 std::string Write(const std::string& name, const std::string& bytes) {
-  const auto path = (testing::FreshTempDir("file_digest") / name).string();
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
+  return testing::WriteTempFile("file_digest", name, bytes);
 }
 
 // The FIPS 180-2 test vectors: the empty message, "abc", and one longer than a read buffer.

@@ -7,12 +7,22 @@
 #include <string>
 #include <vector>
 
+#include "test_support.h"
+
 namespace cablefit::testing {
 
 inline void WriteText(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream out(path, std::ios::binary);
   out << text;
+}
+
+/// Writes `bytes` to `name` in a fresh temporary folder for `tag`; returns the file's path.
+inline std::string WriteTempFile(const std::string& tag, const std::string& name,
+                                 const std::string& bytes) {
+  const std::filesystem::path path = FreshTempDir(tag) / name;
+  WriteText(path, bytes);
+  return path.string();
 }
 
 inline std::string ReadText(const std::filesystem::path& path) {
