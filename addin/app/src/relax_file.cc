@@ -177,9 +177,13 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
     if (f.cables[i]) {
       cables.push_back(CableToJson(*f.cables[i], f.drawing.cables[i]));
     } else {
-      cables.push_back({{"name", f.drawing.cables[i].name},
+      // What the failed cable was, so the reader can see what could not be relaxed.
+      const DrawnCable& drawn = f.drawing.cables[i];
+      cables.push_back({{"name", drawn.name},
                         {"error", f.cable_errors[i]},
-                        {"written_as", "drawn (not relaxed)"}});
+                        {"written_as", "drawn (not relaxed)"},
+                        {"drawn_length", json::NumberOrNull(drawn.centreline.ChordLength())},
+                        {"diameter", OutputDiameter(f, static_cast<int>(i), config)}});
     }
   }
   j["cables"] = cables;

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_runner.h"
 #include "test_support.h"
 
@@ -140,6 +142,17 @@ TEST(SolverFailure, RelaxTimeoutFailsEachCableAndStillWritesTheRun) {
   EXPECT_TRUE(fs::exists(out / "bent_tubes.json"));
   EXPECT_TRUE(fs::exists(out / "report.html"));
   ExpectNoTempFiles(out);
+  // Each failed cable still says what it was: its drawn length and diameter (the two tubes are
+  // 0.334 m of 10 mm and 0.279 m of 8 mm).
+  const nlohmann::json j = nlohmann::json::parse(Slurp(out / "bent_tubes.json"));
+  ASSERT_EQ(j.at("cables").size(), 2u);
+  for (const nlohmann::json& c : j.at("cables")) {
+    EXPECT_EQ(c.at("written_as"), "drawn (not relaxed)");
+    EXPECT_GT(c.at("drawn_length").get<double>(), 0.27);
+    EXPECT_LT(c.at("drawn_length").get<double>(), 0.34);
+    EXPECT_GT(c.at("diameter").get<double>(), 0.007);
+    EXPECT_LT(c.at("diameter").get<double>(), 0.011);
+  }
 }
 
 TEST(SolverFailure, TimeoutMustNotBeNegative) {
