@@ -79,12 +79,12 @@ int CableIndex(const HarnessDrawing& d, const std::string& name, const std::stri
                      "', which the drawing does not have");
 }
 
-// Element frames (tangents only) of a node polyline, for the bend radius.
 // A network's levels are each solved from the drawing (contact sets and all), so each costs a
 // cold solve; the finest of four has 8x the elements of the first (at most ~12000 on a long
 // harness), and the estimate falls about 16x per level on smooth shapes.
 constexpr int kMaxNetworkLevels = 4;
 
+// Element frames (tangents only) of a node polyline, for the bend radius.
 void FramesFromNodes(const Polyline& nodes, RodSolution* sol) {
   const int ne = nodes.size() - 1;
   sol->frame_s.resize(ne);
