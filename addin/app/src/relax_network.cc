@@ -80,9 +80,11 @@ int CableIndex(const HarnessDrawing& d, const std::string& name, const std::stri
 }
 
 // A network's levels are each solved from the drawing (contact sets and all), so each costs a
-// cold solve; the finest of four has 8x the elements of the first (at most ~12000 on a long
-// harness), and the estimate falls about 16x per level on smooth shapes.
+// cold solve; the estimate falls about 16x per level on smooth shapes. At most four levels, and
+// a third or fourth only while its element count stays within kMaxNetworkElements (a long
+// harness's first level already has up to total length / 1 cm elements).
 constexpr int kMaxNetworkLevels = 4;
+constexpr double kMaxNetworkElements = 12000;
 
 // Element frames (tangents only) of a node polyline, for the bend radius.
 void FramesFromNodes(const Polyline& nodes, RodSolution* sol) {
@@ -208,7 +210,11 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   RefinementPlan plan;
   plan.accuracy = options.accuracy;
   plan.min_levels = 2;
-  plan.max_levels = kMaxNetworkLevels;
+  plan.max_levels = 2;
+  const double first_level_elements = total / opt.element_length;
+  while (plan.max_levels < kMaxNetworkLevels &&
+         first_level_elements * (1 << plan.max_levels) <= kMaxNetworkElements)
+    ++plan.max_levels;
   const NetworkSimulation sim = SimulateNetwork(spec, plan, opt);
   const NetworkSolution& fine = sim.finest;
   const bool converged = sim.converged;
