@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <mutex>
 #include <set>
@@ -10,6 +11,7 @@
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/deviation_views.h"
 #include "cablefit/formats/png_file.h"
+#include "cablefit/app/provenance.h"
 #include "cablefit/app/report_html.h"
 
 namespace cablefit::addin {
@@ -156,10 +158,59 @@ std::vector<std::string> WriteCloseUpPictures(const std::string& dir, const Rela
   return names;
 }
 
+namespace {
+
+// What an engineer asks first: how many cables, how many failed or need a look, and the worst
+// deviation; then which tool made the page and when (the JSON leaves the date out on purpose).
+std::string VerdictSection(const std::vector<RelaxedFile>& files, double seconds) {
+  int cables = 0, failed = 0, unstable = 0, bend = 0, taut = 0, inputs_failed = 0;
+  double worst = -1.0;
+  std::string worst_at;
+  for (const RelaxedFile& f : files) {
+    if (!f.error.empty() && f.cables.empty()) ++inputs_failed;
+    for (size_t i = 0; i < f.cables.size(); ++i) {
+      ++cables;
+      const auto& r = f.cables[i];
+      if (!r || !r->result.converged) {
+        ++failed;
+        continue;
+      }
+      if (!r->result.solution.summary.stable) ++unstable;
+      if (r->bend_flag) ++bend;
+      if (r->taut) ++taut;
+      if (r->max_deviation > worst) {
+        worst = r->max_deviation;
+        worst_at = f.drawing.cables[i].name + " (" + f.stem + ")";
+      }
+    }
+  }
+  std::ostringstream h;
+  h << "<section class=\"card\"><h2>Verdict</h2><p><b>" << cables << " cable"
+    << (cables == 1 ? "" : "s") << "</b> from " << files.size() << " input"
+    << (files.size() == 1 ? "" : "s") << ": " << cables - failed << " relaxed, "
+    << "<span class=\"badge " << (failed ? "fail" : "ok") << "\">" << failed << " failed</span>, "
+    << bend << " below the bend-radius limit, " << taut << " taut, " << unstable << " unstable";
+  if (inputs_failed) h << "; " << inputs_failed << " input(s) could not be read";
+  h << ".";
+  if (worst >= 0)
+    h << " Largest deviation from the drawing: <b>" << FormatLength(worst) << "</b>, "
+      << HtmlEscape(worst_at) << ".";
+  char date[32] = "";
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  if (gmtime_r(&now, &utc)) std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &utc);
+  h << "</p><p><small>" << HtmlEscape(ToolVersion()) << ", " << date << ", "
+    << FormatNumber(seconds) << " s.</small></p></section>\n";
+  return h.str();
+}
+
+}  // namespace
+
 void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& files,
                       const HarnessConfig& config, double seconds) {
   std::ostringstream h;
   h << PageHead("cablefit relax");
+  h << VerdictSection(files, seconds);
   h << "<section class=\"card\"><h2>Relaxed cables</h2>\n<p>Each cable is solved as a Kirchhoff "
        "rod under gravity from its drawn shape (nearest equilibrium), ends clamped at their drawn "
        "pose unless harness.json says otherwise. Deviation = distance of the relaxed centreline "

@@ -531,6 +531,11 @@ TEST(RelaxCli, SampleSidecarAppliesToTheSampleHarness) {
   EXPECT_FALSE(CableNamed(j, "branch_a").at("diameter_defaulted").get<bool>());  // "default" block
   EXPECT_NEAR(CableNamed(j, "trunk").at("diameter").get<double>(), 0.012, 1e-12);
   EXPECT_NEAR(CableNamed(j, "branch_a").at("diameter").get<double>(), 0.008, 1e-12);
+  // The report leads with the verdict: 5 cables, none failed, the worst deviation named.
+  const std::string report = testing::ReadTextFile(out / "report.html");
+  EXPECT_NE(report.find("<b>5 cables</b> from 1 input: 5 relaxed"), std::string::npos);
+  EXPECT_NE(report.find(">0 failed<"), std::string::npos);
+  EXPECT_NE(report.find("Largest deviation from the drawing"), std::string::npos);
   // Provenance: the CAD file and the config, each with the SHA-256 of its bytes.
   const Json& inputs = j.at("provenance").at("inputs");
   ASSERT_EQ(inputs.size(), 2u);

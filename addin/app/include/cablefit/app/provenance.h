@@ -1,7 +1,7 @@
 // Where a result came from, in every JSON the tool writes: the tool's version and each input
 // file with its SHA-256, so that a signed-off result can be traced to the exact files behind it.
 // No date and no command line here: the same inputs give the same JSON on every run (the
-// reports carry the date and the command line).
+// relax report carries the date).
 #pragma once
 
 #include <string>
