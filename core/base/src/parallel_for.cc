@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "cablefit/core/base/cancellation.h"
@@ -30,20 +31,13 @@ std::vector<std::exception_ptr> Run(int n, int threads, const std::function<void
     errors[static_cast<std::size_t>(i)] = std::current_exception();
     failed = true;
   };
-  // The calling thread runs its items in its own scope, as a serial loop would.
-  auto own_share = [&] {
+  // The calling thread runs its items in its own scope, as a serial loop would; a worker thread
+  // opens the caller's scope anew for every item.
+  auto run_items = [&](bool worker_thread) {
     for (int i; take(&i);) {
       try {
-        work(i);
-      } catch (...) {
-        record(i);
-      }
-    }
-  };
-  auto worker = [&] {
-    for (int i; take(&i);) {
-      try {
-        const CancellationScope scope(parent);
+        std::optional<CancellationScope> scope;
+        if (worker_thread) scope.emplace(parent);
         work(i);
       } catch (...) {
         record(i);
@@ -51,13 +45,13 @@ std::vector<std::exception_ptr> Run(int n, int threads, const std::function<void
     }
   };
   if (workers <= 1) {
-    own_share();
+    run_items(false);
     return errors;
   }
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(workers - 1));
-  for (int w = 1; w < workers; ++w) pool.emplace_back(worker);
-  own_share();
+  for (int w = 1; w < workers; ++w) pool.emplace_back(run_items, true);
+  run_items(false);
   for (std::thread& t : pool) t.join();
   return errors;
 }
