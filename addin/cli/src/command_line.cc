@@ -5,6 +5,7 @@
 #include <exception>
 #include <string>
 
+#include "cablefit/app/provenance.h"
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
@@ -54,7 +55,7 @@ int RunCommandLine(int argc, char** argv) {
   CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
                "does not look like the real one",
                "cablefit"};
-  app.set_version_flag("--version", std::string("cablefit ") + CABLEFIT_VERSION);
+  app.set_version_flag("--version", ToolVersion());
   app.require_subcommand(1);
   int exit_code = kExitOk;
   RegisterSimulateCommand(app, &exit_code);
