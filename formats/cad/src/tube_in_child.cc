@@ -3,8 +3,6 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS.hxx>
-#include <fcntl.h>
-#include <sys/mman.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -19,34 +17,6 @@
 
 namespace cablefit {
 namespace {
-
-// An anonymous in-memory file (memfd): nothing is left in a temporary folder when this process
-// or the helper is killed. Close-on-exec, so children that other threads start at the same
-// time do not inherit it; RunChildProcess hands it to the helper explicitly.
-class MemoryFile {
- public:
-  explicit MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
-    // The helper gets it as descriptor 3 or 4: keep ours above those so that dup2 never maps a
-    // descriptor onto itself (which would leave close-on-exec set).
-    if (fd_ >= 0 && fd_ <= kHelperFdLast) {
-      const int moved = ::fcntl(fd_, F_DUPFD_CLOEXEC, kHelperFdLast + 1);
-      ::close(fd_);
-      fd_ = moved;
-    }
-  }
-  ~MemoryFile() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  MemoryFile(const MemoryFile&) = delete;
-  MemoryFile& operator=(const MemoryFile&) = delete;
-  int fd() const { return fd_; }
-  // A path that opens the file anew from the start, for OCCT's path-based reading and writing.
-  std::string path() const { return "/proc/self/fd/" + std::to_string(fd_); }
-
- private:
-  static constexpr int kHelperFdLast = 4;
-  int fd_;
-};
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

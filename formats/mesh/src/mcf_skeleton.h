@@ -21,4 +21,10 @@ struct CurveSkeleton {
 /// InvalidInput otherwise.
 CurveSkeleton ComputeMcfSkeleton(const TriangleMesh& mesh);
 
+/// ComputeMcfSkeleton run in the helper process (skeleton_in_child.cc), so that the result does
+/// not depend on what this process did before. Throws InvalidInput as ComputeMcfSkeleton does,
+/// and when the helper crashes or runs longer than `max_seconds`. Computes in this process when
+/// no helper can be started.
+CurveSkeleton ComputeMcfSkeletonInHelper(const TriangleMesh& mesh, double max_seconds = 600.0);
+
 }  // namespace cablefit

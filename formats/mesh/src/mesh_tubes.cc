@@ -149,7 +149,7 @@ Vec3 CapPoint(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double
 }
 
 std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) {
-  const CurveSkeleton skeleton = ComputeMcfSkeleton(mesh);
+  const CurveSkeleton skeleton = ComputeMcfSkeletonInHelper(mesh);
   // A first radius from the skeleton's correspondences: the median vertex-to-node distance.
   std::vector<double> distances;
   for (size_t n = 0; n < skeleton.vertex_points.size(); ++n) {

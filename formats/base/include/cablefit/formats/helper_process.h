@@ -1,0 +1,73 @@
+// Work that can crash or that must not depend on this process's history runs in a separate
+// helper process, the executable cablefit-occt-child:
+// - OCCT 7.6 dereferences null handles on some corrupt STEP files (SIGSEGV in StepToGeom) and
+//   its sweeps have read null faces, which no exception handler can catch: a crash or hang in
+//   the helper becomes one failed input instead of the end of a whole batch;
+// - CGAL's curve skeleton orders some of its work by heap addresses, so the same mesh gave other
+//   routes after other work in the same process (and with --jobs 2): a fresh process gives the
+//   same heap history, hence the same result, every time.
+//
+// The helper is started by posix_spawn, i.e. a fresh process image, never by a bare fork():
+// relax reads and writes files in worker threads, and a fork() taken while another thread holds
+// a lock (the allocator's, OCCT's statics', a sanitizer runtime's) leaves the child waiting on
+// that lock forever.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cablefit {
+
+/// How a helper process ended.
+struct ChildOutcome {
+  int signal = 0;          // the signal that ended it, 0 when it exited
+  int exit_code = 0;       // its exit status when it exited
+  bool timed_out = false;  // still running after the limit (then killed)
+};
+
+/// The helper executable: $CABLEFIT_OCCT_CHILD when set, else cablefit-occt-child beside the
+/// running executable, else the one of the build tree this library was built in. Empty when
+/// none of them is an executable file.
+std::string OcctChildPath();
+
+/// Runs `program` with `args` (argv[1..]) in a new process: same environment and working folder,
+/// standard input and output from/to /dev/null, standard error to /dev/null unless
+/// `keep_stderr`. Each `inherit_fds` entry {from, to} makes this process's descriptor `from`
+/// the child's descriptor `to`. Waits at most `max_seconds` (and no longer than the calling
+/// thread's deadline, see cablefit/core/base/cancellation.h: then the child is killed and
+/// DeadlineExceeded thrown). std::nullopt when the process cannot be started or is lost.
+std::optional<ChildOutcome> RunChildProcess(const std::string& program,
+                                            const std::vector<std::string>& args,
+                                            double max_seconds,
+                                            const std::vector<std::pair<int, int>>& inherit_fds = {},
+                                            bool keep_stderr = false);
+
+/// Runs the helper with `args`. std::nullopt when there is no helper or it cannot be started:
+/// the caller then does the work in this process.
+std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
+                                         const std::vector<std::pair<int, int>>& inherit_fds = {});
+
+/// An anonymous in-memory file (memfd) to hand data to and from the helper: nothing is left in
+/// a temporary folder when this process or the helper is killed. Close-on-exec, so children
+/// that other threads start at the same time do not inherit it; RunChildProcess hands it to the
+/// helper explicitly (as descriptor 3 or 4: ours is kept above those, so that dup2 never maps a
+/// descriptor onto itself, which would leave close-on-exec set).
+class MemoryFile {
+ public:
+  explicit MemoryFile(const char* name);
+  ~MemoryFile();
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+  bool ok() const { return fd_ >= 0; }
+  int fd() const { return fd_; }
+  /// A path that opens the file anew from the start, for path-based readers and writers.
+  std::string path() const { return "/proc/self/fd/" + std::to_string(fd_); }
+
+ private:
+  static constexpr int kHelperFdLast = 4;
+  int fd_;
+};
+
+}  // namespace cablefit

@@ -1,0 +1,156 @@
+#include "cablefit/formats/helper_process.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+
+#include "cablefit/core/base/cancellation.h"
+#include "cablefit/core/base/errors.h"
+
+extern char** environ;
+
+namespace cablefit {
+namespace {
+
+constexpr const char* kChildName = "cablefit-occt-child";
+
+bool IsExecutableFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec) && ::access(path.c_str(), X_OK) == 0;
+}
+
+std::string FindOcctChild() {
+  if (const char* env = std::getenv("CABLEFIT_OCCT_CHILD"); env != nullptr && *env != '\0') {
+    return IsExecutableFile(env) ? std::string(env) : std::string();
+  }
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path beside = self.parent_path() / kChildName;
+    if (IsExecutableFile(beside)) return beside.string();
+  }
+#ifdef CABLEFIT_OCCT_CHILD_BUILD_PATH
+  // Test executables and the FreeCAD module run from other folders of the build tree.
+  if (IsExecutableFile(CABLEFIT_OCCT_CHILD_BUILD_PATH)) return CABLEFIT_OCCT_CHILD_BUILD_PATH;
+#endif
+  return {};
+}
+
+// Kills and reaps the child when the caller leaves RunChildProcess by an exception.
+class ChildGuard {
+ public:
+  explicit ChildGuard(pid_t pid) : pid_(pid) {}
+  ~ChildGuard() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+  ChildGuard(const ChildGuard&) = delete;
+  ChildGuard& operator=(const ChildGuard&) = delete;
+  void Release() { pid_ = -1; }
+
+ private:
+  pid_t pid_;
+};
+
+}  // namespace
+
+std::string OcctChildPath() {
+  static const std::string path = FindOcctChild();
+  return path;
+}
+
+std::optional<ChildOutcome> RunChildProcess(const std::string& program,
+                                            const std::vector<std::string>& args,
+                                            double max_seconds,
+                                            const std::vector<std::pair<int, int>>& inherit_fds,
+                                            bool keep_stderr) {
+  std::vector<std::string> argv_storage;
+  argv_storage.reserve(args.size() + 1);
+  argv_storage.push_back(program);
+  argv_storage.insert(argv_storage.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_storage) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  if (::posix_spawn_file_actions_init(&actions) != 0) return std::nullopt;
+  ::posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  ::posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  if (!keep_stderr) {
+    ::posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  }
+  // dup2 clears close-on-exec on the target; callers pass descriptors opened with O_CLOEXEC so
+  // that children spawned by other threads at the same time do not inherit them.
+  for (const auto& [from, to] : inherit_fds) {
+    ::posix_spawn_file_actions_adddup2(&actions, from, to);
+  }
+  // Same process group as cablefit: a Ctrl-C at the terminal ends the child too.
+  pid_t pid = -1;
+  const int rc = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  ::posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) return std::nullopt;
+
+  ChildGuard guard(pid);
+  const auto start = std::chrono::steady_clock::now();
+  int status = 0;
+  auto pause = std::chrono::microseconds(200);
+  for (;;) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) {
+      guard.Release();
+      return std::nullopt;  // lost the child
+    }
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+        max_seconds) {
+      ChildOutcome outcome;
+      outcome.timed_out = true;
+      return outcome;  // the guard kills and reaps it
+    }
+    CheckCancelled();  // throws; the guard kills and reaps the child
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(20000));
+  }
+  guard.Release();
+  ChildOutcome outcome;
+  if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+  if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
+  return outcome;
+}
+
+std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
+                                         const std::vector<std::pair<int, int>>& inherit_fds) {
+  const std::string program = OcctChildPath();
+  if (program.empty()) return std::nullopt;
+  // The helper's first argument is this process's id: it ends itself when its parent is gone.
+  std::vector<std::string> helper_args{std::to_string(::getpid())};
+  helper_args.insert(helper_args.end(), args.begin(), args.end());
+  return RunChildProcess(program, helper_args, max_seconds, inherit_fds);
+}
+
+MemoryFile::MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
+  if (fd_ >= 0 && fd_ <= kHelperFdLast) {
+    const int moved = ::fcntl(fd_, F_DUPFD_CLOEXEC, kHelperFdLast + 1);
+    ::close(fd_);
+    fd_ = moved;
+  }
+}
+
+MemoryFile::~MemoryFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+}  // namespace cablefit
