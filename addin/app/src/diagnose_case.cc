@@ -202,6 +202,7 @@ void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   for (const ForceDiagnosis& d : all.curves)
     if (d.y_unit != out->deviation_unit) out->deviation_unit = "curve units";
   out->explanation = all.explanation;
+  out->explained = all.explained;
   for (const auto& [effect, score] : all.candidates) out->candidates.emplace_back(ToString(effect), score);
   for (std::size_t i = 0; i < refs.size(); ++i) {
     DiagnosedCurve c;

@@ -76,6 +76,23 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
                      {"chi_square", json::NumberOrNull(a.chi_square)},
                      {"limit_999", json::NumberOrNull(a.limit)}};
   }
+  if (d.kind == CaseKind::kForce) {
+    nlohmann::json curves = nlohmann::json::array();
+    for (const DiagnosedCurve& c : d.curves) {
+      const ForceDiagnosis::Adequacy& a = c.diagnosis.adequacy;
+      curves.push_back({{"curve", c.file},
+                        {"runs", a.runs},
+                        {"expected_runs", json::NumberOrNull(a.expected_runs)},
+                        {"z", json::NumberOrNull(a.z)},
+                        {"rms_fraction_of_peak", json::NumberOrNull(a.rms_fraction)},
+                        {"passed", a.passed}});
+    }
+    j["adequacy"] = {{"test",
+                      "runs test of the best fit's residual signs in recording order; explained "
+                      "unless z < -3.09 (one-sided 99.9 %) with a residual above 0.5 % of the "
+                      "peak response"},
+                     {"curves", std::move(curves)}};
+  }
   if (!d.notes.empty()) j["notes"] = d.notes;
   std::vector<std::pair<std::string, std::string>> inputs = {{"case", d.recording.case_file}};
   for (const RecordingRef& r : d.recording.recordings) inputs.emplace_back(ToString(r.kind), r.path);

@@ -166,6 +166,17 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
                     FormatNumber(a.limit, 3) + ")");
     }
   }
+  if (d.kind == CaseKind::kForce && !d.curves.empty()) {
+    // The worst curve's runs test: the one that decides `explained`.
+    const DiagnosedCurve* worst = &d.curves.front();
+    for (const DiagnosedCurve& c : d.curves)
+      if (c.diagnosis.adequacy.z < worst->diagnosis.adequacy.z) worst = &c;
+    const ForceDiagnosis::Adequacy& a = worst->diagnosis.adequacy;
+    h << Fact("explained", std::string(d.explained ? "yes" : "no") + " (" +
+                               HtmlEscape(worst->file) + ": " + std::to_string(a.runs) +
+                               " residual sign runs, about " + FormatNumber(a.expected_runs, 3) +
+                               " expected from noise, z " + FormatNumber(a.z, 3) + ")");
+  }
   h << "</div>\n<p class=\"explanation\">" << HtmlEscape(d.explanation) << "</p>\n";
   if (!d.notes.empty()) {
     h << "<ul class=\"notes\">\n";

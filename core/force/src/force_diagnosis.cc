@@ -64,6 +64,14 @@ std::string Explain(const ForceDiagnosis& d, const ForceCandidate& c) {
     return it == c.parameters.end() ? 0.0 : it->second;
   };
   const double ratio = c.effect == ForceEffect::kNone ? 1.0 : param("ratio");
+  if (!d.adequacy.passed) {
+    s << "no catalogue effect explains the recorded curve: the best fit (" << ToString(c.effect)
+      << ") leaves a systematic residual of " << Fixed(100.0 * d.adequacy.rms_fraction, 1)
+      << " % of the peak response (" << d.adequacy.runs << " runs of one sign where noise gives about "
+      << Fixed(d.adequacy.expected_runs, 0) << "); check the set-up: the rig type and its geometry, "
+      << "the units, the sensor's zero, and whether the cable was pre-bent or twisted";
+    return s.str();
+  }
   if (c.effect == ForceEffect::kNone) {
     s << "the recorded curve matches the nominal model within its noise (max deviation "
       << Num(d.baseline.max_deviation) << " " << d.y_unit << ", noise about " << Num(d.noise_sigma)
@@ -98,6 +106,38 @@ const ForceCandidate& CandidateFor(const ForceDiagnosis& d, ForceEffect effect) 
   throw InvalidInput(std::string("force diagnosis has no candidate ") + ToString(effect));
 }
 
+// One-sided 99.9 % point of the standard normal distribution.
+constexpr double kRunsZLimit = -3.09;
+constexpr double kMinSystematicFraction = 0.005;
+
+ForceDiagnosis::Adequacy TestAdequacy(const Eigen::VectorXd& y, const Eigen::VectorXd& fitted) {
+  ForceDiagnosis::Adequacy a;
+  const Eigen::VectorXd r = y - fitted;
+  const double peak = y.cwiseAbs().maxCoeff();
+  a.rms_fraction = peak > 0 && r.size() > 0 ? std::sqrt(r.squaredNorm() / r.size()) / peak : 0.0;
+  double positive = 0, negative = 0;
+  int previous = 0;
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    const int sign = r(i) > 0 ? 1 : r(i) < 0 ? -1 : 0;
+    if (sign == 0) continue;  // an exact zero belongs to neither run
+    (sign > 0 ? positive : negative) += 1;
+    if (sign != previous) ++a.runs;
+    previous = sign;
+  }
+  const double n = positive + negative;
+  if (positive < 1 || negative < 1) {
+    // All of one sign: one run, the most systematic residual there is.
+    a.expected_runs = n / 2 + 1;
+    a.z = n >= 10 ? -std::sqrt(n) : 0.0;
+  } else {
+    a.expected_runs = 2 * positive * negative / n + 1;
+    const double variance = (a.expected_runs - 1) * (a.expected_runs - 2) / (n - 1);
+    a.z = variance > 0 ? (a.runs - a.expected_runs) / std::sqrt(variance) : 0.0;
+  }
+  a.passed = !(a.z < kRunsZLimit && a.rms_fraction > kMinSystematicFraction);
+  return a;
+}
+
 // Fills the chosen-model fields of *d from candidate `c`.
 void Choose(const ForceDiagnosis& base, const ForceCandidate& c, const Eigen::VectorXd& y,
             ForceDiagnosis* d) {
@@ -110,6 +150,7 @@ void Choose(const ForceDiagnosis& base, const ForceCandidate& c, const Eigen::Ve
   d->fitted = Deviation(y, c.fitted);
   const double n = static_cast<double>(y.size());
   d->noise_sigma = std::sqrt(c.rss / std::max(1.0, n - c.parameter_count));
+  d->adequacy = TestAdequacy(y, c.fitted);
   d->explanation = Explain(*d, c);
 }
 
@@ -255,14 +296,22 @@ ForceCaseDiagnosis CombineForceDiagnoses(const std::vector<ForceDiagnosis>& curv
     sum_sq_base += n * re.baseline.rms_deviation * re.baseline.rms_deviation;
     sum_sq_fit += n * re.fitted.rms_deviation * re.fitted.rms_deviation;
     rows += n;
+    out.explained = out.explained && re.adequacy.passed;
     out.curves.push_back(std::move(re));
   }
   out.baseline.rms_deviation = std::sqrt(sum_sq_base / rows);
   out.fitted.rms_deviation = std::sqrt(sum_sq_fit / rows);
+  // A best fit that leaves a systematic residual is not a diagnosis.
+  if (!out.explained) out.confidence = std::min(out.confidence, 0.1);
   const ForceDiagnosis& strongest = out.curves[static_cast<size_t>(out.strongest_curve)];
   out.parameters = strongest.parameters;
   out.explanation =
       (strongest.file.empty() ? std::string() : strongest.file + ": ") + strongest.explanation;
+  for (const ForceDiagnosis& d : out.curves) {
+    if (d.adequacy.passed) continue;
+    out.explanation = (d.file.empty() ? std::string() : d.file + ": ") + d.explanation;
+    break;
+  }
   if (curves.size() > 1) {
     out.explanation += " (" + std::to_string(curves.size()) + " curves combined)";
   }

@@ -91,6 +91,7 @@ TEST(ForceCorpus, ConfusionMatrixOnGeneratedCurves) {
                                               ForceEffect::kHysteresis};
   int confusion[3][3] = {};
   int total = 0, correct = 0, ratio_ok = 0, ratio_n = 0, area_ok = 0, area_n = 0;
+  int not_explained = 0;  // curves of catalogue effects whose fit failed the adequacy test
   double worst_ratio_err = 0.0, worst_area_err = 0.0;
   for (int trial = 0; trial < 100; ++trial) {
     for (int e = 0; e < 3; ++e) {
@@ -100,6 +101,12 @@ TEST(ForceCorpus, ConfusionMatrixOnGeneratedCurves) {
       const int got = static_cast<int>(d.effect);
       ++confusion[e][got];
       ++total;
+      if (!d.adequacy.passed) {
+        ++not_explained;
+        std::printf("  not explained: %s as %s, runs z %.2f, residual %.2f %% of peak\n",
+                    ToString(s.effect), ToString(d.effect), d.adequacy.z,
+                    100 * d.adequacy.rms_fraction);
+      }
       correct += got == e;
       if (got == e && s.effect == ForceEffect::kStiffness) {
         const double err = std::abs(d.parameters.at("ratio") / s.ratio - 1.0);
@@ -134,8 +141,11 @@ TEST(ForceCorpus, ConfusionMatrixOnGeneratedCurves) {
   }
   std::printf(
       "  correct %d / %d; ratio within 15 %%: %d / %d (worst %.3f); loop area within "
-      "15 %%: %d / %d (worst %.3f)\n",
-      correct, total, ratio_ok, ratio_n, worst_ratio_err, area_ok, area_n, worst_area_err);
+      "15 %%: %d / %d (worst %.3f); not explained %d\n",
+      correct, total, ratio_ok, ratio_n, worst_ratio_err, area_ok, area_n, worst_area_err,
+      not_explained);
+  // The adequacy test is one-sided at 99.9 %: on curves the catalogue made, about 0.3 of 300.
+  EXPECT_LE(not_explained, 2);
   EXPECT_GE(correct, static_cast<int>(std::ceil(0.95 * total)));
   EXPECT_EQ(confusion[0][1] + confusion[0][2], 0) << "false positives on none";
   EXPECT_EQ(ratio_ok, ratio_n);

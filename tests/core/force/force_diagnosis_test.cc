@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <random>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/force/force_rig.h"
@@ -28,6 +29,7 @@ TEST(ForceDiagnosis, IdentifiesPublicCases) {
     }
     EXPECT_EQ(ToString(d.effect), c.truth_effect) << c.name;
     EXPECT_GE(d.confidence, 0.5) << c.name;
+    EXPECT_TRUE(d.adequacy.passed) << c.name << ": runs z " << d.adequacy.z;
     if (c.truth_effect == "stiffness") {
       ASSERT_TRUE(c.truth_ratio.has_value());
       EXPECT_NEAR(d.parameters.at("ratio"), *c.truth_ratio, 0.15 * *c.truth_ratio) << c.name;
@@ -44,6 +46,51 @@ TEST(ForceDiagnosis, IdentifiesPublicCases) {
     EXPECT_EQ(d.nominal_curve.size(), c.curve.x.size());
     EXPECT_FALSE(d.explanation.empty());
   }
+}
+
+// A cable that softens elastically (the same path loading and unloading, 30 % softer at the
+// largest angle) is none of the catalogue's effects: the best fit leaves long runs of one sign,
+// and the diagnosis says that nothing explains the curve instead of naming the closest effect.
+TEST(ForceDiagnosis, ACurveNoCatalogueEffectMakesIsNotExplained) {
+  RodSpec rod;
+  rod.length = 0.6;
+  rod.material.torsional_stiffness = 0.01;
+  rod.gravity = Vec3::Zero();
+  ForceTestSpec test;
+  test.type = ForceTestType::kClampedTorsion;
+  test.max_angle = 0.4;
+  ForceCurve curve;
+  std::vector<double> x;
+  for (int c = 0; c < 2; ++c) {
+    for (int i = 0; i <= 20; ++i) x.push_back(test.max_angle * i / 20);
+    for (int i = 19; i >= 0; --i) x.push_back(test.max_angle * i / 20);
+  }
+  curve.x = Eigen::Map<Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size()));
+  const Eigen::VectorXd nominal = NominalForceCurve(rod, test, curve.x);
+  const double peak = nominal.cwiseAbs().maxCoeff();
+  curve.y = nominal;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.005 * peak);
+  for (Eigen::Index i = 0; i < curve.y.size(); ++i) {
+    const double u = curve.x[i] / test.max_angle;
+    curve.y[i] = nominal[i] * (1.0 - 0.3 * u * u) + noise(rng);
+  }
+  const ForceDiagnosis d = DiagnoseForceCurve(rod, test, curve, {}, "softening.csv");
+  EXPECT_FALSE(d.adequacy.passed) << "runs z " << d.adequacy.z;
+  EXPECT_LT(d.adequacy.z, -3.09);
+  EXPECT_NE(d.explanation.find("no catalogue effect explains"), std::string::npos)
+      << d.explanation;
+  const ForceCaseDiagnosis all = CombineForceDiagnoses({d});
+  EXPECT_FALSE(all.explained);
+  EXPECT_LE(all.confidence, 0.1);
+  EXPECT_NE(all.explanation.find("softening.csv: no catalogue effect"), std::string::npos)
+      << all.explanation;
+
+  // The same curve without the softening is explained.
+  for (Eigen::Index i = 0; i < curve.y.size(); ++i) curve.y[i] = nominal[i] + noise(rng);
+  const ForceDiagnosis plain = DiagnoseForceCurve(rod, test, curve);
+  EXPECT_TRUE(plain.adequacy.passed) << "runs z " << plain.adequacy.z;
+  EXPECT_TRUE(CombineForceDiagnoses({plain}).explained);
 }
 
 TEST(ForceDiagnosis, CombinesCurvesOfOneCase) {

@@ -87,6 +87,19 @@ struct ForceDiagnosis {
   std::map<std::string, double> parameters;  ///< of the chosen model (spec names + nuisances)
   std::vector<JenkinsElement> elements;      ///< hysteresis: the fitted Iwan elements
   double noise_sigma = 0.0;        ///< residual standard deviation of the chosen model [unit]
+  /// Whether the chosen model explains the curve: its residual, in recording order, must look
+  /// like noise. Wald-Wolfowitz runs test of the residual signs (a force curve has no noise
+  /// estimate of its own to compare with): a model that misses the physics leaves long runs of
+  /// one sign. z = (runs - expected) / standard deviation; not explained when z is below the
+  /// one-sided 99.9 % point (-3.09) and the residual is larger than 0.5 % of the peak response
+  /// (a systematic residual smaller than that is within what a bench can tell).
+  struct Adequacy {
+    int runs = 0;
+    double expected_runs = 0.0;
+    double z = 0.0;
+    double rms_fraction = 0.0;  ///< fitted RMS deviation / peak recorded response
+    bool passed = true;
+  } adequacy;
   CurveDeviation baseline;         ///< recorded vs nominal
   CurveDeviation fitted;           ///< recorded vs fitted
   Eigen::VectorXd recorded_curve;  ///< n, the recorded force/moment
@@ -116,6 +129,7 @@ struct ForceCaseDiagnosis {
   int strongest_curve = 0;
   CurveDeviation baseline;  ///< max over curves; rms pooled over all rows
   CurveDeviation fitted;
+  bool explained = true;  ///< every curve's chosen fit passed its adequacy test
   std::string explanation;
   std::vector<ForceDiagnosis> curves;  ///< each re-expressed with the case-level effect
 };
