@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -50,6 +51,50 @@ double UnitInMetres(const std::string& name) {
   return it->second;
 }
 
+namespace {
+
+double Median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+std::string Millimetres(double metres) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.3g mm", 1e3 * metres);
+  return text;
+}
+
+}  // namespace
+
+std::string ImplausibleMeshUnit(const HarnessDrawing& d, double mesh_unit) {
+  // Wires, bundles and hoses lie between these diameters; a mesh carries no unit, so sizes far
+  // outside mean the unit was most likely wrong.
+  constexpr double kMinDiameter = 0.3e-3, kMaxDiameter = 0.15;
+  constexpr double kTypicalDiameter = 8e-3;
+  std::vector<double> diameters, lengths;
+  for (const DrawnCable& c : d.cables) {
+    if (c.diameter > 0) diameters.push_back(c.diameter);
+    lengths.push_back(c.centreline.ChordLength());
+  }
+  if (diameters.empty()) return {};
+  const double diameter = Median(diameters), length = Median(lengths);
+  if (diameter >= kMinDiameter && diameter <= kMaxDiameter) return {};
+  std::string best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const char* unit : {"mm", "cm", "m", "in"}) {
+    const double scaled = diameter * UnitInMetres(unit) / mesh_unit;
+    const double distance = std::abs(std::log(scaled / kTypicalDiameter));
+    if (scaled >= kMinDiameter && scaled <= kMaxDiameter && distance < best_distance) {
+      best_distance = distance;
+      best = std::string("; if the file is in ") + unit + ", use --unit " + unit + " (" +
+             Millimetres(scaled) + " across, " +
+             Millimetres(length * UnitInMetres(unit) / mesh_unit) + " long)";
+    }
+  }
+  return "the tubes are " + Millimetres(diameter) + " across and " + Millimetres(length) +
+         " long (medians), implausible for cables" + best;
+}
+
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   if (IsCadPath(path)) return ReadCadFile(path);
   const FileKind kind = SniffFileKind(path);
@@ -66,8 +111,13 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
                           "a scan is diagnosed through the case.json that lists it ('cablefit "
                           "diagnose')");
   }
-  const std::vector<MeshTube> tubes = ReadMeshFile(path, mesh_unit);
-  if (tubes.empty()) throw FileError(path, "no tube found in the mesh");
+  MeshContents contents = ReadMeshContents(path, mesh_unit);
+  if (contents.tubes.empty()) {
+    throw FileError(path, "no tube found in the mesh: " +
+                              (contents.parts.empty() ? std::string("it has no closed component")
+                                                      : contents.parts.front().reason));
+  }
+  const std::vector<MeshTube>& tubes = contents.tubes;
   HarnessDrawing d;
   d.source_path = path;
   const std::string stem = std::filesystem::path(path).stem().string();
@@ -82,6 +132,16 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
     min_diameter = std::min(min_diameter, c.diameter);
     d.cables.push_back(std::move(c));
   }
+  // Components that are no tube stay in the harness as parts: drawn, and clips and obstacles
+  // for the cables, as a STEP file's other solids are.
+  for (MeshPart& part : contents.parts) {
+    DrawnSolid solid;
+    solid.name = stem + "-part" + std::to_string(part.component + 1);
+    solid.mesh = std::move(part.mesh);
+    d.skipped.push_back(part.reason);
+    d.solids.push_back(std::move(solid));
+  }
+  if (std::string why = ImplausibleMeshUnit(d, mesh_unit); !why.empty()) d.warnings.push_back(why);
   // Branch ends recovered from a skeleton sit within a fraction of the tube radius of each other.
   FindJunctions(&d, 0.25 * min_diameter);
   return d;
@@ -166,6 +226,7 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   j["provenance"] = ProvenanceJson({{"input", f.input}, {"config", config.path}});
   j["min_bend_radius_factor"] = config.min_bend_radius_factor;
   j["not_cables"] = f.drawing.skipped;  // what the input drew that was not taken as a cable, and why
+  if (!f.drawing.warnings.empty()) j["warnings"] = f.drawing.warnings;
   if (!f.networks.empty()) {
     j["networks"] = f.networks;
     j["networks_meaning"] =

@@ -173,6 +173,8 @@ int RunRelax(const RelaxArgs& a) {
       f.read_ok = true;
       for (const std::string& why : f.drawing.skipped)
         bar.PrintLine(stderr, "cablefit: note: " + f.input + ": not taken as a cable: " + why);
+      for (const std::string& why : f.drawing.warnings)
+        bar.PrintLine(stderr, "cablefit: warning: " + f.input + ": " + why);
       f.cables.resize(f.drawing.cables.size());
       f.cable_errors.resize(f.drawing.cables.size());
     } catch (...) {

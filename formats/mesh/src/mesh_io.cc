@@ -74,6 +74,11 @@ TriangleMesh ReadTriangleMesh(const std::string& path, double unit) {
   return result;
 }
 
+MeshContents ReadMeshContents(const std::string& path, double unit, double min_aspect) {
+  const TriangleMesh mesh = ReadTriangleMesh(path, unit);
+  return RecoverMeshContents(mesh, min_aspect);
+}
+
 std::vector<MeshTube> ReadMeshFile(const std::string& path, double unit) {
   const TriangleMesh mesh = ReadTriangleMesh(path, unit);
   try {

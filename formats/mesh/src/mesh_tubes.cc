@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 #include "cablefit/core/base/errors.h"
@@ -228,14 +229,37 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
 
 }  // namespace
 
-std::vector<MeshTube> RecoverTubes(const TriangleMesh& mesh) {
-  std::vector<MeshTube> tubes;
+MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
+  MeshContents out;
   const std::vector<TriangleMesh> components = ConnectedComponents(mesh);
   for (size_t c = 0; c < components.size(); ++c) {
-    std::vector<MeshTube> more = TubesOfComponent(components[c], static_cast<int>(c));
-    for (auto& t : more) tubes.push_back(std::move(t));
+    const int component = static_cast<int>(c);
+    try {
+      std::vector<MeshTube> more = TubesOfComponent(components[c], component);
+      if (more.size() == 1) {
+        const double length = more.front().centreline.ChordLength();
+        const double diameter = more.front().diameter;
+        if (length < min_aspect * diameter) {
+          char why[160];
+          std::snprintf(why, sizeof why,
+                        " is a short stout solid (%.3g mm long, %.3g mm across, under %g "
+                        "diameters): a part, not a cable",
+                        1e3 * length, 1e3 * diameter, min_aspect);
+          throw InvalidInput("component " + std::to_string(component) + why);
+        }
+      }
+      for (auto& t : more) out.tubes.push_back(std::move(t));
+    } catch (const InvalidInput& e) {
+      out.parts.push_back({component, components[c], e.what()});
+    }
   }
-  return tubes;
+  return out;
+}
+
+std::vector<MeshTube> RecoverTubes(const TriangleMesh& mesh) {
+  MeshContents contents = RecoverMeshContents(mesh, 0.0);
+  if (!contents.parts.empty()) throw InvalidInput(contents.parts.front().reason);
+  return std::move(contents.tubes);
 }
 
 }  // namespace cablefit

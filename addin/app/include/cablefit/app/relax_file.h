@@ -21,8 +21,13 @@ bool IsMeshPath(const std::string& path);
 /// Throws InvalidInput for an unknown unit.
 double UnitInMetres(const std::string& name);
 
-/// Reads a CAD file (ReadCadFile) or a mesh (ReadMeshFile, tubes named "<stem>#k", junctions
-/// between tube ends closer than a quarter of the smaller diameter). Throws FileError.
+/// Empty when the tubes of a mesh read with `mesh_unit` [m per file unit] are plausible cable
+/// sizes; else one line saying why not and which unit would make them plausible.
+std::string ImplausibleMeshUnit(const HarnessDrawing& drawing, double mesh_unit);
+
+/// Reads a CAD file (ReadCadFile) or a mesh (ReadMeshContents: tubes named "<stem>#k", junctions
+/// between tube ends closer than a quarter of the smaller diameter, other components kept as
+/// solids "<stem>-part<k>", a warning for implausible sizes). Throws FileError.
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit);
 
 /// Per-stage wall times of one input [s].

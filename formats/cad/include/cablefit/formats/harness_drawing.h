@@ -74,6 +74,9 @@ struct HarnessDrawing {
   /// What was read but not taken as a cable, one line each with the reason ("'Profile': a
   /// closed planar curve (a sketch profile), not a cable route").
   std::vector<std::string> skipped;
+  /// Doubts about the input as a whole, one line each ("the tubes are 0.04 mm across ...: if the
+  /// file is in metres, use --unit m").
+  std::vector<std::string> warnings;
 };
 
 /// Gives every cable a distinct name: an unnamed cable becomes "cable-<k>", a name used by

@@ -18,6 +18,33 @@ struct MeshTube {
   double fit_error = 0.0;///< RMS of (surface distance to centreline - radius) [m]
 };
 
+/// A connected component of a mesh that is no cable: a bracket, a frame, a short stout part.
+struct MeshPart {
+  int component = 0;
+  TriangleMesh mesh;   ///< [m]
+  std::string reason;  ///< why it is no tube ("component 2 is not a tube (cross-sections ...)")
+};
+
+/// Everything a mesh holds: its tubes, and the other components, kept as parts (drawn, and
+/// usable as clips and for contact) rather than a reason to drop the whole file.
+struct MeshContents {
+  std::vector<MeshTube> tubes;
+  std::vector<MeshPart> parts;
+};
+
+/// A tube shorter than this many diameters is a part (a screw shank, a bush, a stout cylinder),
+/// not a cable: a cable is slender and bends. The CAD reader's default (CadReadOptions).
+inline constexpr double kMinMeshTubeAspect = 10.0;
+
+/// Reads a mesh file: tubes and other parts. Throws FileError(path, problem) when the file
+/// cannot be read or holds no triangles.
+MeshContents ReadMeshContents(const std::string& path, double unit,
+                              double min_aspect = kMinMeshTubeAspect);
+
+/// Tubes and other parts of an already loaded mesh [m]. A component that is a single tube
+/// shorter than `min_aspect` diameters is a part.
+MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect = kMinMeshTubeAspect);
+
 /// Reads a mesh file and recovers its tubes. `unit` is the length of one file unit in metres
 /// (meshes carry no unit: 0.001 for millimetres). Throws FileError(path, problem) when the file
 /// cannot be read, holds no triangles, or a component is not a tube.
