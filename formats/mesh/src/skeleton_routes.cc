@@ -1,6 +1,7 @@
 #include "skeleton_routes.h"
 
 #include <functional>
+#include <limits>
 #include <numeric>
 
 namespace cablefit {
@@ -70,9 +71,14 @@ std::vector<SkeletonRoute> SplitSkeleton(const CurveSkeleton& skeleton, double m
     }
     return -1;
   };
-  // Spurs: short side branches that mean-curvature flow leaves at bumps and caps.
-  for (bool changed = true; changed;) {
-    changed = false;
+  // Spurs: side branches that mean-curvature flow leaves at bumps and caps, short, or running
+  // beside the axis inside the body (a single 1 m tube came back as three cables around a 41 mm
+  // spur of that kind). A spur's reach is how far its free end gets from the rest of the
+  // skeleton. One spur is removed at a time, the one that reaches least, so that of a true end
+  // and an artefact running beside it the artefact goes (the true end reaches out to the cap).
+  for (;;) {
+    double weakest = std::numeric_limits<double>::infinity();
+    std::vector<int> weakest_path;
     for (int v = 0; v < n; ++v) {
       if (removed[v] || degree(v) != 1) continue;
       std::vector<int> path{v};
@@ -87,11 +93,22 @@ std::vector<SkeletonRoute> SplitSkeleton(const CurveSkeleton& skeleton, double m
         if (degree(current) != 2) break;
         path.push_back(current);
       }
-      if (degree(current) >= 3 && length < min_spur) {
-        for (int p : path) removed[p] = true;
-        changed = true;
+      if (degree(current) < 3) continue;
+      std::vector<bool> on_spur(n, false);
+      for (int p : path) on_spur[p] = true;
+      double reach = std::numeric_limits<double>::infinity();
+      for (int w = 0; w < n; ++w) {
+        if (removed[w] || on_spur[w]) continue;
+        reach = std::min(reach, (skeleton.nodes.col(w) - skeleton.nodes.col(v)).norm());
+      }
+      const double strength = std::min(length, reach);
+      if (strength < min_spur && strength < weakest) {
+        weakest = strength;
+        weakest_path = path;
       }
     }
+    if (weakest_path.empty()) break;
+    for (int p : weakest_path) removed[p] = true;
   }
   std::vector<SkeletonRoute> routes;
   std::vector<std::vector<bool>> used(n);

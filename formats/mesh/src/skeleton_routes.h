@@ -17,8 +17,8 @@ struct SkeletonRoute {
   bool finish_is_end = false;
 };
 
-/// Removes spurs (a free end joined to a branch point by a path shorter than `min_spur` [m]),
-/// then returns every maximal path between nodes of degree != 2. A cycle without such a node
+/// Removes spurs (a free end joined to a branch point by a path shorter than `min_spur` [m], or
+/// whose free end lies within `min_spur` of the rest of the skeleton), then returns every maximal path between nodes of degree != 2. A cycle without such a node
 /// is returned as one route with neither end free.
 std::vector<SkeletonRoute> SplitSkeleton(const CurveSkeleton& skeleton, double min_spur);
 

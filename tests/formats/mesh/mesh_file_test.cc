@@ -54,6 +54,27 @@ TEST(MeshFile, BentTubeStlReadsBackWithinOnePercentOfDiameter) {
   EXPECT_NEAR(tubes[0].centreline.points(0, 0), 0.0, 0.01 * diameter);
 }
 
+// A finely tessellated 0.92 m S-shaped tube (64 sides, 60k triangles, a 3 MB STL): one cable,
+// not several around the doubled skeleton paths the flow leaves along it (before: three cables
+// around a 41 mm spur running beside the axis), on its route within 1 % of the diameter.
+TEST(MeshFile, AFinelyTessellatedLongTubeIsOneCableOnItsRoute) {
+  const double diameter = 0.010;
+  const auto route = [](double t) {
+    return Vec3(0.8 * t, 0.1 * std::sin(2 * M_PI * t), 0.05 * std::sin(M_PI * t));
+  };
+  const Polyline truth = SampleCurve(route, 20001);
+  const TriangleMesh tube = SweepTubeMesh(SampleCurve(route, 470), diameter, 64);
+  const auto path = (testing::FreshTempDir("mesh_long") / "long_tube.stl").string();
+  WriteMeshFile(path, tube, 0.001);
+  const std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
+  ASSERT_EQ(tubes.size(), 1u);
+  EXPECT_NEAR(tubes[0].centreline.ChordLength(), truth.ChordLength(), 0.01 * diameter);
+  std::printf("long STL tube (%ld triangles): centreline max %.2e m from the route\n",
+              static_cast<long>(tube.faces.cols()), MaxDistanceToPolyline(tubes[0].centreline, truth));
+  EXPECT_LT(MaxDistanceToPolyline(tubes[0].centreline, truth), 0.01 * diameter);
+  EXPECT_LT(MaxDistanceToPolyline(truth, tubes[0].centreline), 0.01 * diameter);
+}
+
 TEST(MeshFile, SampleStlHasTwoBentTubes) {
   const auto path = (testing::SourceDir() / "samples/harness/bent_tubes.stl").string();
   std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
