@@ -7,11 +7,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <mutex>
 #include <thread>
 
 #include "cablefit/core/base/cancellation.h"
@@ -22,26 +25,32 @@ extern char** environ;
 namespace cablefit {
 namespace {
 
-constexpr const char* kChildName = "cablefit-occt-child";
-
 bool IsExecutableFile(const std::filesystem::path& path) {
   std::error_code ec;
   return std::filesystem::is_regular_file(path, ec) && ::access(path.c_str(), X_OK) == 0;
 }
 
-std::string FindOcctChild() {
-  if (const char* env = std::getenv("CABLEFIT_OCCT_CHILD"); env != nullptr && *env != '\0') {
+// "cablefit-occt-child" -> "CABLEFIT_OCCT_CHILD".
+std::string EnvironmentName(const std::string& helper) {
+  std::string name;
+  for (const char c : helper) name += c == '-' ? '_' : static_cast<char>(std::toupper(c));
+  return name;
+}
+
+std::string FindHelper(const std::string& helper) {
+  if (const char* env = std::getenv(EnvironmentName(helper).c_str()); env != nullptr && *env != '\0') {
     return IsExecutableFile(env) ? std::string(env) : std::string();
   }
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    const std::filesystem::path beside = self.parent_path() / kChildName;
+    const std::filesystem::path beside = self.parent_path() / helper;
     if (IsExecutableFile(beside)) return beside.string();
   }
-#ifdef CABLEFIT_OCCT_CHILD_BUILD_PATH
+#ifdef CABLEFIT_HELPER_BUILD_DIR
   // Test executables and the FreeCAD module run from other folders of the build tree.
-  if (IsExecutableFile(CABLEFIT_OCCT_CHILD_BUILD_PATH)) return CABLEFIT_OCCT_CHILD_BUILD_PATH;
+  const std::filesystem::path built = std::filesystem::path(CABLEFIT_HELPER_BUILD_DIR) / helper;
+  if (IsExecutableFile(built)) return built.string();
 #endif
   return {};
 }
@@ -67,10 +76,16 @@ class ChildGuard {
 
 }  // namespace
 
-std::string OcctChildPath() {
-  static const std::string path = FindOcctChild();
-  return path;
+std::string HelperPath(const std::string& helper) {
+  static std::mutex mutex;
+  static std::map<std::string, std::string> found;
+  const std::lock_guard lock(mutex);
+  const auto it = found.find(helper);
+  if (it != found.end()) return it->second;
+  return found[helper] = FindHelper(helper);
 }
+
+std::string OcctChildPath() { return HelperPath(kOcctHelper); }
 
 std::optional<ChildOutcome> RunChildProcess(const std::string& program,
                                             const std::vector<std::string>& args,
@@ -131,14 +146,20 @@ std::optional<ChildOutcome> RunChildProcess(const std::string& program,
   return outcome;
 }
 
-std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
-                                         const std::vector<std::pair<int, int>>& inherit_fds) {
-  const std::string program = OcctChildPath();
+std::optional<ChildOutcome> RunHelper(const std::string& helper,
+                                      const std::vector<std::string>& args, double max_seconds,
+                                      const std::vector<std::pair<int, int>>& inherit_fds) {
+  const std::string program = HelperPath(helper);
   if (program.empty()) return std::nullopt;
   // The helper's first argument is this process's id: it ends itself when its parent is gone.
   std::vector<std::string> helper_args{std::to_string(::getpid())};
   helper_args.insert(helper_args.end(), args.begin(), args.end());
   return RunChildProcess(program, helper_args, max_seconds, inherit_fds);
+}
+
+std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
+                                         const std::vector<std::pair<int, int>>& inherit_fds) {
+  return RunHelper(kOcctHelper, args, max_seconds, inherit_fds);
 }
 
 MemoryFile::MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {

@@ -1,13 +1,10 @@
 // cablefit-occt-child: the helper process of cablefit/formats/helper_process.h. It runs one piece
-// of work that can crash on real data (so that a segfault ends this process and not cablefit), or
-// whose result must not depend on the history of the calling process.
+// of OCCT work that can crash on real data, so that a segfault ends this process and not cablefit.
 //   cablefit-occt-child PARENT_PID read PATH SPACING DEFLECTION AREA_FRACTION ASPECT JUNCTION_TOL
 //       reads the STEP/IGES file as ReadCadFile does; exit 0 whether or not it is valid (the
 //       read in cablefit reports the problem), non-zero or a signal only when OCCT crashed
 //   cablefit-occt-child PARENT_PID sweep SPINE_FD DIAMETER TUBE_FD
 //       sweeps the tube of SweepTubeInHelper
-//   cablefit-occt-child PARENT_PID skeleton MESH_FD SKELETON_FD
-//       the curve skeleton of a mesh component (internal::SkeletonInHelper)
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -17,9 +14,6 @@
 
 #include "cad_read_in_process.h"
 #include "tube_in_child.h"
-#ifdef CABLEFIT_HELPER_SKELETON
-#include "cablefit/formats/internal/skeleton_helper.h"
-#endif
 
 namespace {
 
@@ -47,11 +41,6 @@ int Run(int argc, char** argv) {
   if (mode == "sweep" && argc == 6) {
     return cablefit::SweepTubeInHelper(std::atoi(argv[3]), Number(argv[4]), std::atoi(argv[5]));
   }
-#ifdef CABLEFIT_HELPER_SKELETON
-  if (mode == "skeleton" && argc == 5) {
-    return cablefit::internal::SkeletonInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
-  }
-#endif
   return kUsage;
 }
 

@@ -131,7 +131,7 @@ CurveSkeleton ComputeMcfSkeletonInHelper(const TriangleMesh& mesh, double max_se
     if (!out.flush()) return ComputeMcfSkeleton(mesh);
   }
   const auto outcome =
-      RunOcctChild({"skeleton", "3", "4"}, max_seconds, {{mesh_file.fd(), 3}, {skeleton_file.fd(), 4}});
+      RunHelper(kMeshHelper, {"skeleton", "3", "4"}, max_seconds, {{mesh_file.fd(), 3}, {skeleton_file.fd(), 4}});
   if (!outcome) return ComputeMcfSkeleton(mesh);  // no helper: same skeleton, history-dependent
   if (outcome->timed_out) {
     throw InvalidInput("the mesh skeleton did not finish within " +

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/helper_process.h"
 #include "curve_distance.h"
 #include "test_support.h"
 
@@ -181,6 +182,7 @@ TEST(MeshFile, BranchedTubesSplitIntoRoutesAtTheBranchPoint) {
 // on another thread at the same time, must not change a route (before, the branched sample's
 // arms came out 0.5 mm longer or shorter after another mesh, and again otherwise with 2 threads).
 TEST(MeshFile, RoutesDoNotDependOnWhatTheProcessDidBefore) {
+  ASSERT_FALSE(HelperPath(kMeshHelper).empty()) << "the mesh helper is not built";
   const auto branched = (testing::SourceDir() / "samples/harness/branched_tubes.stl").string();
   const auto bent = (testing::SourceDir() / "samples/harness/bent_tubes.stl").string();
   const std::vector<MeshTube> first = ReadMeshFile(branched, 0.001);

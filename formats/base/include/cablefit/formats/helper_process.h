@@ -1,5 +1,6 @@
 // Work that can crash or that must not depend on this process's history runs in a separate
-// helper process, the executable cablefit-occt-child:
+// helper process, the executables cablefit-occt-child (OCCT work) and cablefit-mesh-child (mesh
+// skeletons; a small program, quick to start):
 // - OCCT 7.6 dereferences null handles on some corrupt STEP files (SIGSEGV in StepToGeom) and
 //   its sweeps have read null faces, which no exception handler can catch: a crash or hang in
 //   the helper becomes one failed input instead of the end of a whole batch;
@@ -27,10 +28,15 @@ struct ChildOutcome {
   bool timed_out = false;  // still running after the limit (then killed)
 };
 
-/// The helper executable: $CABLEFIT_OCCT_CHILD when set, else cablefit-occt-child beside the
-/// running executable, else the one of the build tree this library was built in. Empty when
-/// none of them is an executable file.
-std::string OcctChildPath();
+inline constexpr const char* kOcctHelper = "cablefit-occt-child";
+inline constexpr const char* kMeshHelper = "cablefit-mesh-child";
+
+/// The helper executable named `helper`: $CABLEFIT_OCCT_CHILD / $CABLEFIT_MESH_CHILD (the name in
+/// capitals, '-' as '_') when set, else the file of that name beside the running executable, else
+/// the one of the build tree this library was built in. Empty when none of them is an
+/// executable file.
+std::string HelperPath(const std::string& helper);
+std::string OcctChildPath();  ///< HelperPath(kOcctHelper)
 
 /// Runs `program` with `args` (argv[1..]) in a new process: same environment and working folder,
 /// standard input and output from/to /dev/null, standard error to /dev/null unless
@@ -44,8 +50,12 @@ std::optional<ChildOutcome> RunChildProcess(const std::string& program,
                                             const std::vector<std::pair<int, int>>& inherit_fds = {},
                                             bool keep_stderr = false);
 
-/// Runs the helper with `args`. std::nullopt when there is no helper or it cannot be started:
-/// the caller then does the work in this process.
+/// Runs the helper `helper` with `args` (after this process's id, so that it can tell when its
+/// parent is gone). std::nullopt when there is no helper or it cannot be started: the caller
+/// then does the work in this process.
+std::optional<ChildOutcome> RunHelper(const std::string& helper,
+                                      const std::vector<std::string>& args, double max_seconds,
+                                      const std::vector<std::pair<int, int>>& inherit_fds = {});
 std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
                                          const std::vector<std::pair<int, int>>& inherit_fds = {});
 
