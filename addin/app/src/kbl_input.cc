@@ -32,10 +32,10 @@ KblBundle BundleOf(const std::vector<KblWire>& wires) {
     }
     if (w.min_bend_radius) b.min_bend_radius = std::max(b.min_bend_radius, *w.min_bend_radius);
   }
-  // One wire is its own bundle; several fill a disc at the packing fraction, never thinner than
-  // the thickest of them.
+  // One wire is its own bundle; several fill a disc at the packing fraction (always wider than
+  // the thickest of them, since the fraction is below 1).
   if (b.wires_with_diameter == 1) b.diameter = largest;
-  if (b.wires_with_diameter > 1) b.diameter = std::max(largest, std::sqrt(sum_d2 / kBundlePackingFraction));
+  if (b.wires_with_diameter > 1) b.diameter = std::sqrt(sum_d2 / kBundlePackingFraction);
   if (!wires.empty() && with_mass == static_cast<int>(wires.size())) b.linear_density = mass;
   return b;
 }

@@ -20,8 +20,8 @@ inline constexpr double kBundlePackingFraction = 0.75;
 
 /// A segment's bundle from its wires.
 struct KblBundle {
-  /// [m] max(largest wire, sqrt(sum d_i^2 / kBundlePackingFraction)); 0 when no wire gives an
-  /// outside diameter.
+  /// [m] one wire: its outside diameter; several: sqrt(sum d_i^2 / kBundlePackingFraction);
+  /// 0 when no wire gives an outside diameter.
   double diameter = 0.0;
   int wires_with_diameter = 0;
   /// [kg/m] sum of the wires' mass per length; 0 unless every wire gives one.
