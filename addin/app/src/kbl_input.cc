@@ -6,6 +6,8 @@
 #include <filesystem>
 
 #include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_file.h"
+#include "cablefit/formats/file_kind.h"
 
 namespace cablefit::addin {
 namespace {
@@ -45,6 +47,10 @@ bool IsKblPath(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".kbl";
+}
+
+bool IsKblInput(const std::string& path) {
+  return IsKblPath(path) || (!IsCadPath(path) && SniffFileKind(path) == FileKind::kKbl);
 }
 
 KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {

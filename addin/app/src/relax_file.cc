@@ -53,7 +53,7 @@ double UnitInMetres(const std::string& name) {
 
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   if (IsCadPath(path)) return ReadCadFile(path);
-  if (IsKblPath(path)) return ReadKblInput(path, HarnessConfig{}).drawing;
+  if (IsKblInput(path)) return ReadKblInput(path, HarnessConfig{}).drawing;
   const FileKind kind = SniffFileKind(path);
   if (kind == FileKind::kJson) {
     throw FileError(path, "is a JSON file, not CAD or a mesh: a recording case goes to 'cablefit "

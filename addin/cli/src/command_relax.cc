@@ -170,7 +170,7 @@ int RunRelax(const RelaxArgs& a) {
     try {
       std::unique_lock lock(cad_mutex, std::defer_lock);
       if (IsCadPath(f.input)) lock.lock();
-      if (IsKblPath(f.input)) {
+      if (IsKblInput(f.input)) {
         // The file's own physics per segment, the user's harness.json over it.
         KblInput kbl = ReadKblInput(f.input, config);
         f.drawing = std::move(kbl.drawing);

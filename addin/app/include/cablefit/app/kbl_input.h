@@ -35,6 +35,9 @@ KblBundle BundleOf(const std::vector<KblWire>& wires);
 
 /// True for the extension ".kbl" (any case).
 bool IsKblPath(const std::string& path);
+/// True for a ".kbl" path, or a file of another extension (".xml") whose content is a KBL
+/// container (SniffFileKind).
+bool IsKblInput(const std::string& path);
 
 /// What `relax` reads from a KBL file.
 struct KblInput {
