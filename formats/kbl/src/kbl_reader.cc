@@ -296,7 +296,32 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
     const std::string what = "Routing " + Attribute(r, "id");
     const xmlNode* occ = WireOccurrence(ids, ChildText(r, "Routed_wire"), what);
     const KblWire wire = ReadWire(occ, ids);
-    for (const std::string& sref : Tokens(ChildText(r, "Segments"))) {
+    const std::vector<std::string> route = Tokens(ChildText(r, "Segments"));
+    // A wire is one piece: its segments must form one connected path through their nodes. The
+    // physics does not depend on it, so a gap is a note, not an error.
+    std::set<std::string> reached;
+    std::vector<bool> joined(route.size(), false);
+    for (bool grew = true; grew && !route.empty();) {
+      grew = false;
+      for (size_t k = 0; k < route.size(); ++k) {
+        const auto it = seg_index.find(route[k]);
+        if (joined[k] || it == seg_index.end()) continue;
+        const KblSegment& s = h.segments[static_cast<size_t>(it->second)];
+        if (k == 0 || reached.count(s.start.node) || reached.count(s.end.node)) {
+          joined[k] = grew = true;
+          reached.insert(s.start.node);
+          reached.insert(s.end.node);
+        }
+      }
+    }
+    for (size_t k = 0; k < route.size(); ++k) {
+      if (!joined[k] && seg_index.count(route[k])) {
+        h.notes.push_back(what + ": its segments are not connected (" + route[k] +
+                          " shares no node with the others)");
+        break;
+      }
+    }
+    for (const std::string& sref : route) {
       const auto it = seg_index.find(sref);
       if (it == seg_index.end()) throw InvalidInput(what + ": '" + sref + "' names no Segment");
       std::vector<KblWire>& wires = h.segments[static_cast<size_t>(it->second)].wires;

@@ -180,6 +180,22 @@ TEST_F(KblBadInput, DanglingRoutedSegment) {
                     FileError, "'Segment_9' names no Segment");
 }
 
+TEST_F(KblBadInput, WireThroughUnconnectedSegmentsIsANote) {
+  // Generator: Routing id_338_0 runs Segment_1 (Node_1-Node_2) and Segment_2 (Node_3-Node_2);
+  // rerouted through Segment_1 and a segment moved off Node_2, it has a gap.
+  std::string text = testing::ReadTextFile(Sample("generator"));
+  const size_t seg2 = text.find("<Segment id=\"Segment_2\">");
+  const size_t end_node = text.find("<End_node>Node_2</End_node>", seg2);
+  ASSERT_NE(end_node, std::string::npos);
+  text.replace(end_node, std::string("<End_node>Node_2</End_node>").size(), "<End_node>Node_4</End_node>");
+  const KblHarness h = ReadKblFile(Write(text), {.node_tolerance = 1.0});
+  bool noted = false;
+  for (const std::string& n : h.notes) noted = noted || n.find("Routing id_338_0: its segments are not connected (Segment_2") != std::string::npos;
+  EXPECT_TRUE(noted);
+  const KblHarness ok = ReadKblFile(Sample("generator"));
+  for (const std::string& n : ok.notes) EXPECT_EQ(n.find("not connected"), std::string::npos) << n;
+}
+
 TEST_F(KblBadInput, MissingUnit) {
   EXPECT_THROW_WITH(ReadKblFile(Edited("<Si_unit_name>metre</Si_unit_name>", "")), FileError,
                     "Unit ");
