@@ -99,9 +99,13 @@ std::vector<std::string> UniqueStems(const std::vector<std::string>& files) {
 
 std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
   // A bend radius a thousand times the cable's length is a straight cable drawn with round-off.
-  char bend[64];
+  char bend[160];
   if (!std::isfinite(r.min_bend_radius) || r.min_bend_radius > 1e3 * r.setup.spec.length) {
     std::snprintf(bend, sizeof bend, "straight");
+  } else if (r.bend_flag && r.setup.min_bend_radius_limit > 0) {
+    // A cable's own limit (a KBL file's wires) is not the run's factor: say which and where.
+    std::snprintf(bend, sizeof bend, "%.1f mm (TOO TIGHT: the cable's limit %.1f mm, at s=%.3f m)",
+                  1e3 * r.min_bend_radius, 1e3 * r.bend_limit, r.min_bend_radius_s);
   } else {
     std::snprintf(bend, sizeof bend, "%.1f mm%s", 1e3 * r.min_bend_radius,
                   r.bend_flag ? " (TOO TIGHT)" : "");

@@ -79,6 +79,7 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
 
 TEST(RelaxKblCli, ABrokenKblFileFailsAloneAndTheBatchGoesOn) {
   const fs::path out = testing::FreshTempDir("relax_kbl_bad");
+  // (The gearbox cable is drawn with a 20.4 mm bend against its wire's 29.4 mm Bend_radius.)
   const fs::path bad = out.parent_path() / "relax_kbl_bad_input.kbl";
   std::ofstream(bad) << "<kbl:KBL_container xmlns:kbl=\"http://www.prostep.org/Car_electric_"
                         "container/KBL2.3/KBLSchema\"><Segment id=\"S1\"><Start_node>N9"
@@ -89,6 +90,8 @@ TEST(RelaxKblCli, ABrokenKblFileFailsAloneAndTheBatchGoesOn) {
   EXPECT_NE(run.err.find("cablefit: " + bad.string() + ": not XML"), std::string::npos) << run.err;
   EXPECT_TRUE(fs::exists(out / (std::string(kGearbox) + ".json")));
   EXPECT_TRUE(fs::exists(out / (std::string(kGearbox) + ".step")));
+  EXPECT_NE(run.out.find("Segment_1: L=0.625 m"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(TOO TIGHT: the cable's limit 29.4 mm, at s="), std::string::npos) << run.out;
 }
 
 }  // namespace
