@@ -71,7 +71,7 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
     if (bundle.diameter > 0) {
       drawn.diameter = bundle.diameter;
       diameter_source = bundle.wires_with_diameter == 1 ? "the wire's outside diameter"
-                                                         : "wires packed at 75 % of a disc";
+                                                        : "wires packed at 75 % of a disc";
       // Stiffness from the bundle's diameter as for any drawn cable (assumed modulus), the mass
       // from the wires' own data where every wire gives it.
       MaterialSpec m = DefaultBundleMaterial(bundle.diameter);
@@ -106,8 +106,11 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
       clip.kind = SupportKind::kClip;
       clip.s = f.location * length;
       cc.supports.push_back(clip);
-      fixings.push_back({{"id", f.id}, {"name", f.name}, {"type", f.type},
-                         {"location", f.location}, {"s", *clip.s}});
+      fixings.push_back({{"id", f.id},
+                         {"name", f.name},
+                         {"type", f.type},
+                         {"location", f.location},
+                         {"s", *clip.s}});
     }
     const auto own = user.cables.find(seg.id);
     in.config.cables[seg.id] = own == user.cables.end() ? cc : Overlaid(cc, own->second);
@@ -128,7 +131,10 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
     }
     json::Json protections = json::Json::array();
     for (const KblProtection& p : seg.protections) {
-      protections.push_back({{"id", p.id}, {"type", p.type}, {"start", p.start}, {"end", p.end},
+      protections.push_back({{"id", p.id},
+                             {"type", p.type},
+                             {"start", p.start},
+                             {"end", p.end},
                              {"modelled", false}});
     }
     auto end_json = [](const KblSegmentEnd& e) {
@@ -137,24 +143,27 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
                         {"connectors", e.connectors},
                         {"segments_at_node", e.segments_at_node}};
     };
-    in.cable_json[seg.id] = json::Json({{"segment", seg.id},
-                             {"id", seg.name},
-                             {"start", end_json(seg.start)},
-                             {"end", end_json(seg.end)},
-                             {"virtual_length", OptionalNumber(seg.virtual_length)},
-                             {"drawn_length", seg.drawn_length},
-                             {"node_miss", seg.node_miss},
-                             {"bundle_diameter", bundle.diameter > 0 ? json::Json(bundle.diameter) : json::Json()},
-                             {"diameter", drawn.diameter > 0 ? json::Json(drawn.diameter) : json::Json()},
-                             {"diameter_source", diameter_source},
-                             {"cross_section_area", OptionalNumber(seg.cross_section_area)},
-                             {"diameter_from_area", area_diameter > 0 ? json::Json(area_diameter) : json::Json()},
-                             {"wires_linear_density", bundle.linear_density > 0 ? json::Json(bundle.linear_density) : json::Json()},
-                             {"wires_min_bend_radius", bundle.min_bend_radius > 0 ? json::Json(bundle.min_bend_radius) : json::Json()},
-                             {"wires", wires},
-                             {"fixings", fixings},
-                             {"protections", protections},
-                             {"assumed", assumed}});
+    in.cable_json[seg.id] = json::Json(
+        {{"segment", seg.id},
+         {"id", seg.name},
+         {"start", end_json(seg.start)},
+         {"end", end_json(seg.end)},
+         {"virtual_length", OptionalNumber(seg.virtual_length)},
+         {"drawn_length", seg.drawn_length},
+         {"node_miss", seg.node_miss},
+         {"bundle_diameter", bundle.diameter > 0 ? json::Json(bundle.diameter) : json::Json()},
+         {"diameter", drawn.diameter > 0 ? json::Json(drawn.diameter) : json::Json()},
+         {"diameter_source", diameter_source},
+         {"cross_section_area", OptionalNumber(seg.cross_section_area)},
+         {"diameter_from_area", area_diameter > 0 ? json::Json(area_diameter) : json::Json()},
+         {"wires_linear_density",
+          bundle.linear_density > 0 ? json::Json(bundle.linear_density) : json::Json()},
+         {"wires_min_bend_radius",
+          bundle.min_bend_radius > 0 ? json::Json(bundle.min_bend_radius) : json::Json()},
+         {"wires", wires},
+         {"fixings", fixings},
+         {"protections", protections},
+         {"assumed", assumed}});
   }
   // Said once, not per segment: every bundle's stiffness is this estimate (the JSON's material
   // source says it per cable).

@@ -10,7 +10,8 @@ namespace cablefit {
 
 Vec3 EvaluateUniformBSpline(const Eigen::Matrix3Xd& control, int degree, double t) {
   const int n = static_cast<int>(control.cols());
-  CABLEFIT_REQUIRE(degree >= 1 && n > degree, "a B-spline needs more control points than its degree");
+  CABLEFIT_REQUIRE(degree >= 1 && n > degree,
+                   "a B-spline needs more control points than its degree");
   const int p = degree;
   // Knot span [k, k+1) holding t; the last span is closed so t = n evaluates.
   const int k = std::clamp(static_cast<int>(std::floor(t)), p, n - 1);

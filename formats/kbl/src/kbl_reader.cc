@@ -50,7 +50,8 @@ void CheckContainer(const xmlNode* root, std::string* version) {
   if (!root || Name(root) != "KBL_container") {
     throw InvalidInput("root element is <" + Name(root) + ">, not a KBL_container");
   }
-  const std::string ns = root->ns && root->ns->href ? reinterpret_cast<const char*>(root->ns->href) : "";
+  const std::string ns =
+      root->ns && root->ns->href ? reinterpret_cast<const char*>(root->ns->href) : "";
   const std::string prefix = kNamespacePrefix, suffix = kNamespaceSuffix;
   const bool ok = ns.size() > prefix.size() + suffix.size() && ns.rfind(prefix, 0) == 0 &&
                   ns.compare(ns.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -68,7 +69,8 @@ Vec3 PointOf(const xmlNode* cp) {
     throw InvalidInput(what + ": " + std::to_string(c.size()) + " coordinates (expected 3)");
   }
   Vec3 p;
-  for (int i = 0; i < 3; ++i) p[i] = kCoordinateUnit * kbl::ParseNumber(Text(c[static_cast<size_t>(i)]), what);
+  for (int i = 0; i < 3; ++i)
+    p[i] = kCoordinateUnit * kbl::ParseNumber(Text(c[static_cast<size_t>(i)]), what);
   return p;
 }
 
@@ -83,13 +85,15 @@ Polyline SegmentCurve(const xmlNode* seg, const std::string& seg_id, const IdInd
     const std::vector<std::string> refs = Tokens(ChildText(cc, "Control_points"));
     Eigen::Matrix3Xd control(3, static_cast<Eigen::Index>(refs.size()));
     for (size_t i = 0; i < refs.size(); ++i)
-      control.col(static_cast<Eigen::Index>(i)) = PointOf(Resolve(ids, refs[i], what, "Cartesian_point"));
+      control.col(static_cast<Eigen::Index>(i)) =
+          PointOf(Resolve(ids, refs[i], what, "Cartesian_point"));
     const double degree = kbl::ParseNumber(ChildText(cc, "Degree"), what + ": Degree");
     if (degree != std::floor(degree) || degree < 1 || degree > 32) {
       throw InvalidInput(what + ": Degree " + ChildText(cc, "Degree") + " (expected 1 to 32)");
     }
     try {
-      pieces.push_back(SampleUniformBSpline(control, static_cast<int>(degree), options.samples_per_span));
+      pieces.push_back(
+          SampleUniformBSpline(control, static_cast<int>(degree), options.samples_per_span));
     } catch (const InvalidInput& e) {
       throw InvalidInput(what + ": " + e.what());
     }
@@ -106,11 +110,14 @@ Polyline SegmentCurve(const xmlNode* seg, const std::string& seg_id, const IdInd
   for (size_t k = 1; k < pieces.size(); ++k) {
     Polyline next = pieces[k];
     if (k == 1) {
-      const double d_ee = std::min((last(route) - first(next)).norm(), (last(route) - last(next)).norm());
-      const double d_se = std::min((first(route) - first(next)).norm(), (first(route) - last(next)).norm());
+      const double d_ee =
+          std::min((last(route) - first(next)).norm(), (last(route) - last(next)).norm());
+      const double d_se =
+          std::min((first(route) - first(next)).norm(), (first(route) - last(next)).norm());
       if (d_se < d_ee) route = reversed(route);
     }
-    if ((last(route) - last(next)).norm() < (last(route) - first(next)).norm()) next = reversed(next);
+    if ((last(route) - last(next)).norm() < (last(route) - first(next)).norm())
+      next = reversed(next);
     const double gap = (last(route) - first(next)).norm();
     if (gap > options.node_tolerance) {
       throw InvalidInput("Segment " + seg_id + ": Center_curve " + Attribute(curves[k], "id") +
@@ -133,7 +140,9 @@ bool TrimAtNode(Polyline* route, bool at_start, const Vec3& node, double toleran
   Eigen::Index best_i = 0;
   for (Eigen::Index i = 0; i + 1 < p.cols(); ++i) {
     const Vec3 d = p.col(i + 1) - p.col(i);
-    const double u = d.squaredNorm() > 0 ? std::clamp((node - p.col(i)).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double u = d.squaredNorm() > 0
+                         ? std::clamp((node - p.col(i)).dot(d) / d.squaredNorm(), 0.0, 1.0)
+                         : 0.0;
     const double dist = (p.col(i) + u * d - node).norm();
     if (dist < best) {
       best = dist;
@@ -168,7 +177,8 @@ const xmlNode* WireOccurrence(const IdIndex& ids, const std::string& ref, const 
     n = Resolve(ids, wire, "Connection " + ref);
   }
   // A core of a multi-core cable runs inside its cable: the cable is what fills the segment.
-  if (Name(n) == "Core_occurrence" && n->parent && n->parent->type == XML_ELEMENT_NODE) n = n->parent;
+  if (Name(n) == "Core_occurrence" && n->parent && n->parent->type == XML_ELEMENT_NODE)
+    n = n->parent;
   const std::string name = Name(n);
   if (name != "General_wire_occurrence" && name != "Wire_occurrence" &&
       name != "Special_wire_occurrence") {
@@ -183,11 +193,15 @@ KblWire ReadWire(const xmlNode* occ, const IdIndex& ids) {
   const std::string from = Name(occ) + " " + w.id;
   w.part = ChildText(occ, "Part");
   const xmlNode* part = Resolve(ids, w.part, from, "General_wire");
-  if (const xmlNode* v = Child(part, "Outside_diameter")) w.outside_diameter = kbl::SiValue(v, Quantity::kLength, ids);
-  if (const xmlNode* v = Child(part, "Cross_section_area")) w.conductor_area = kbl::SiValue(v, Quantity::kArea, ids);
-  if (const xmlNode* v = Child(part, "Bend_radius")) w.min_bend_radius = kbl::SiValue(v, Quantity::kLength, ids);
+  if (const xmlNode* v = Child(part, "Outside_diameter"))
+    w.outside_diameter = kbl::SiValue(v, Quantity::kLength, ids);
+  if (const xmlNode* v = Child(part, "Cross_section_area"))
+    w.conductor_area = kbl::SiValue(v, Quantity::kArea, ids);
+  if (const xmlNode* v = Child(part, "Bend_radius"))
+    w.min_bend_radius = kbl::SiValue(v, Quantity::kLength, ids);
   if (const xmlNode* v = Child(part, "Min_bend_radius_static")) {
-    w.min_bend_radius = std::max(w.min_bend_radius.value_or(0.0), kbl::SiValue(v, Quantity::kLength, ids));
+    w.min_bend_radius =
+        std::max(w.min_bend_radius.value_or(0.0), kbl::SiValue(v, Quantity::kLength, ids));
   }
   // Mass_information of a wire part is per length; a plain mass (a part's weight) says nothing
   // about the bundle's density and is left out.
@@ -206,21 +220,18 @@ bool IsConnectorLike(const std::string& element) {
          element == "Terminal_occurrence";
 }
 
-KblHarness ReadContainer(const xmlNode* root, const std::string& path, const KblReadOptions& options) {
-  KblHarness h;
-  CheckContainer(root, &h.version);
-  const IdIndex ids = kbl::IndexIds(root);
-  h.drawing.source_path = path;
-  h.drawing.length_unit = "mm";
+// A Node: its name, the connectors placed there, its own point if any, and (filled later) the
+// segment ends at it.
+struct NodeInfo {
+  std::string name;
+  std::vector<std::string> connectors;
+  std::optional<Vec3> point;
+  std::vector<CableJunction::End> ends;  // segment index (into KblHarness::segments), which end
+};
+using NodeMap = std::map<std::string, NodeInfo>;
 
-  // Nodes: name, connectors placed there, own point if any.
-  struct NodeInfo {
-    std::string name;
-    std::vector<std::string> connectors;
-    std::optional<Vec3> point;
-    std::vector<CableJunction::End> ends;  // segment index (into h.segments) and which end
-  };
-  std::map<std::string, NodeInfo> nodes;
+NodeMap ReadNodes(const xmlNode* root, const IdIndex& ids) {
+  NodeMap nodes;
   for (const xmlNode* n : Children(root, "Node")) {
     const std::string id = Attribute(n, "id");
     NodeInfo info;
@@ -237,61 +248,63 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
     nodes[id] = std::move(info);
   }
 
-  // Segments.
-  std::vector<const xmlNode*> seg_nodes = Children(root, "Segment");
-  if (seg_nodes.empty()) throw InvalidInput("KBL_container holds no Segment");
-  std::map<std::string, int> seg_index;
-  for (const xmlNode* sn : seg_nodes) {
-    KblSegment seg;
-    seg.id = Attribute(sn, "id");
-    if (seg.id.empty()) throw InvalidInput("a Segment without id");
-    const std::string what = "Segment " + seg.id;
-    seg.name = ChildText(sn, "Id");
-    for (auto [end, tag] : {std::pair{&seg.start, "Start_node"}, std::pair{&seg.end, "End_node"}}) {
-      end->node = ChildText(sn, tag);
-      if (end->node.empty()) throw InvalidInput(what + ": no " + tag);
-      Resolve(ids, end->node, what, "Node");
-      end->node_name = nodes[end->node].name;
-      end->connectors = nodes[end->node].connectors;
-    }
-    if (const xmlNode* v = Child(sn, "Virtual_length")) seg.virtual_length = kbl::SiValue(v, Quantity::kLength, ids);
-    if (const xmlNode* info = Child(sn, "Cross_section_area_information")) {
-      if (const xmlNode* a = Child(info, "Area")) seg.cross_section_area = kbl::SiValue(a, Quantity::kArea, ids);
-    }
-    for (const xmlNode* fa : Children(sn, "Fixing_assignment")) {
-      KblFixing f;
-      const std::string fwhat = "Fixing_assignment " + Attribute(fa, "id") + " of " + what;
-      f.location = kbl::ParseNumber(ChildText(fa, "Location"), fwhat + ": Location");
-      if (f.location < 0 || f.location > 1) throw InvalidInput(fwhat + ": Location outside 0..1");
-      f.id = ChildText(fa, "Fixing");
-      const xmlNode* occ = Resolve(ids, f.id, fwhat, "Fixing_occurrence");
-      f.name = ChildText(occ, "Id");
-      const std::string part = ChildText(occ, "Part");
-      if (!part.empty()) f.type = ChildText(Resolve(ids, part, "Fixing_occurrence " + f.id), "Fixing_type");
-      seg.fixings.push_back(std::move(f));
-    }
-    for (const xmlNode* pa : Children(sn, "Protection_area")) {
-      KblProtection p;
-      const std::string pwhat = "Protection_area " + Attribute(pa, "id") + " of " + what;
-      p.start = kbl::ParseNumber(ChildText(pa, "Start_location"), pwhat + ": Start_location");
-      p.end = kbl::ParseNumber(ChildText(pa, "End_location"), pwhat + ": End_location");
-      p.id = ChildText(pa, "Associated_protection");
-      const xmlNode* occ = Resolve(ids, p.id, pwhat);
-      const std::string part = ChildText(occ, "Part");
-      if (!part.empty()) p.type = ChildText(Resolve(ids, part, Name(occ) + " " + p.id), "Protection_type");
-      seg.protections.push_back(std::move(p));
-    }
-    DrawnCable cable;
-    cable.name = seg.id;
-    cable.source = CableSourceKind::kCurve;
-    cable.centreline = SegmentCurve(sn, seg.id, ids, options);
-    seg.drawn_length = cable.centreline.s[cable.centreline.size() - 1];
-    seg_index[seg.id] = static_cast<int>(h.segments.size());
-    h.segments.push_back(std::move(seg));
-    h.drawing.cables.push_back(std::move(cable));
-  }
+  return nodes;
+}
 
-  // Wires: each routing puts its wire into the segments it lists.
+// A Segment's own data (its curve is read by SegmentCurve).
+KblSegment ReadSegment(const xmlNode* sn, const NodeMap& nodes, const IdIndex& ids) {
+  KblSegment seg;
+  seg.id = Attribute(sn, "id");
+  if (seg.id.empty()) throw InvalidInput("a Segment without id");
+  const std::string what = "Segment " + seg.id;
+  seg.name = ChildText(sn, "Id");
+  for (auto [end, tag] : {std::pair{&seg.start, "Start_node"}, std::pair{&seg.end, "End_node"}}) {
+    end->node = ChildText(sn, tag);
+    if (end->node.empty()) throw InvalidInput(what + ": no " + tag);
+    Resolve(ids, end->node, what, "Node");
+    if (const auto it = nodes.find(end->node); it != nodes.end()) {
+      end->node_name = it->second.name;
+      end->connectors = it->second.connectors;
+    }
+  }
+  if (const xmlNode* v = Child(sn, "Virtual_length"))
+    seg.virtual_length = kbl::SiValue(v, Quantity::kLength, ids);
+  if (const xmlNode* info = Child(sn, "Cross_section_area_information")) {
+    if (const xmlNode* a = Child(info, "Area"))
+      seg.cross_section_area = kbl::SiValue(a, Quantity::kArea, ids);
+  }
+  for (const xmlNode* fa : Children(sn, "Fixing_assignment")) {
+    KblFixing f;
+    const std::string fwhat = "Fixing_assignment " + Attribute(fa, "id") + " of " + what;
+    f.location = kbl::ParseNumber(ChildText(fa, "Location"), fwhat + ": Location");
+    if (f.location < 0 || f.location > 1) throw InvalidInput(fwhat + ": Location outside 0..1");
+    f.id = ChildText(fa, "Fixing");
+    const xmlNode* occ = Resolve(ids, f.id, fwhat, "Fixing_occurrence");
+    f.name = ChildText(occ, "Id");
+    const std::string part = ChildText(occ, "Part");
+    if (!part.empty())
+      f.type = ChildText(Resolve(ids, part, "Fixing_occurrence " + f.id), "Fixing_type");
+    seg.fixings.push_back(std::move(f));
+  }
+  for (const xmlNode* pa : Children(sn, "Protection_area")) {
+    KblProtection p;
+    const std::string pwhat = "Protection_area " + Attribute(pa, "id") + " of " + what;
+    p.start = kbl::ParseNumber(ChildText(pa, "Start_location"), pwhat + ": Start_location");
+    p.end = kbl::ParseNumber(ChildText(pa, "End_location"), pwhat + ": End_location");
+    p.id = ChildText(pa, "Associated_protection");
+    const xmlNode* occ = Resolve(ids, p.id, pwhat);
+    const std::string part = ChildText(occ, "Part");
+    if (!part.empty())
+      p.type = ChildText(Resolve(ids, part, Name(occ) + " " + p.id), "Protection_type");
+    seg.protections.push_back(std::move(p));
+  }
+  return seg;
+}
+
+// Each Routing puts its wire into the segments it lists.
+void AddRoutings(const xmlNode* root, const IdIndex& ids,
+                 const std::map<std::string, int>& seg_index, KblHarness* out) {
+  KblHarness& h = *out;
   for (const xmlNode* r : Children(root, "Routing")) {
     const std::string what = "Routing " + Attribute(r, "id");
     const xmlNode* occ = WireOccurrence(ids, ChildText(r, "Routed_wire"), what);
@@ -325,11 +338,18 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
       const auto it = seg_index.find(sref);
       if (it == seg_index.end()) throw InvalidInput(what + ": '" + sref + "' names no Segment");
       std::vector<KblWire>& wires = h.segments[static_cast<size_t>(it->second)].wires;
-      if (std::none_of(wires.begin(), wires.end(), [&](const KblWire& w) { return w.id == wire.id; }))
+      if (std::none_of(wires.begin(), wires.end(),
+                       [&](const KblWire& w) { return w.id == wire.id; }))
         wires.push_back(wire);
     }
   }
+}
 
+// Positions the nodes, cuts curves that run on past their node, records the junctions; returns
+// per segment whether it misses one of its nodes.
+std::vector<bool> PlaceNodes(NodeMap* node_map, const KblReadOptions& options, KblHarness* out) {
+  KblHarness& h = *out;
+  NodeMap& nodes = *node_map;
   // Nodes' positions and junctions. A node without a point of its own is where most of its
   // segments' ends agree (the first in file order on a tie); an end farther than the tolerance
   // misses its node.
@@ -351,7 +371,8 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
       int best = -1;
       for (size_t a = 0; a < info.ends.size(); ++a) {
         int agree = 0;
-        for (const auto& e : info.ends) agree += (end_point(e) - end_point(info.ends[a])).norm() <= options.node_tolerance;
+        for (const auto& e : info.ends)
+          agree += (end_point(e) - end_point(info.ends[a])).norm() <= options.node_tolerance;
         if (agree > best) {
           best = agree;
           ref = end_point(info.ends[a]);
@@ -387,6 +408,12 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
     if (j.ends.size() >= 2) h.drawing.junctions.push_back(j);
   }
 
+  return refused;
+}
+
+// `h` without the refused segments (each named in `skipped`), junction indices renumbered.
+KblHarness WithoutRefused(KblHarness h, const std::vector<bool>& refused,
+                          const KblReadOptions& options) {
   // A segment whose curve misses a node cannot be joined to the harness: it is left out (named
   // in `skipped`), the others are relaxed. Its index is removed from the junctions too.
   std::vector<int> new_index(h.segments.size(), -1);
@@ -398,8 +425,10 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
   for (size_t i = 0; i < h.segments.size(); ++i) {
     if (refused[i]) {
       char buf[256];
-      std::snprintf(buf, sizeof buf, "Segment %s: its centre curve ends %.3f mm from its node (tolerance %.3f mm): left out",
-                    h.segments[i].id.c_str(), 1e3 * h.segments[i].node_miss, 1e3 * options.node_tolerance);
+      std::snprintf(
+          buf, sizeof buf,
+          "Segment %s: its centre curve ends %.3f mm from its node (tolerance %.3f mm): left out",
+          h.segments[i].id.c_str(), 1e3 * h.segments[i].node_miss, 1e3 * options.node_tolerance);
       kept.drawing.skipped.push_back(buf);
       continue;
     }
@@ -421,16 +450,52 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path, const Kbl
     if (j.ends.size() >= 2) kept.drawing.junctions.push_back(j);
   }
 
-  // Checks that do not stop the reading.
-  for (const KblSegment& seg : kept.segments) {
-    if (seg.virtual_length && std::abs(seg.drawn_length - *seg.virtual_length) > 0.01 * *seg.virtual_length + 1e-3) {
+  return kept;
+}
+
+// Findings that do not stop the reading: lengths against Virtual_length, segments without wires.
+void AddLengthNotes(KblHarness* h) {
+  for (const KblSegment& seg : h->segments) {
+    if (seg.virtual_length &&
+        std::abs(seg.drawn_length - *seg.virtual_length) > 0.01 * *seg.virtual_length + 1e-3) {
       char buf[256];
-      std::snprintf(buf, sizeof buf, "Segment %s: centre curve %.2f mm long, Virtual_length %.2f mm",
-                    seg.id.c_str(), 1e3 * seg.drawn_length, 1e3 * *seg.virtual_length);
-      kept.notes.push_back(buf);
+      std::snprintf(buf, sizeof buf,
+                    "Segment %s: centre curve %.2f mm long, Virtual_length %.2f mm", seg.id.c_str(),
+                    1e3 * seg.drawn_length, 1e3 * *seg.virtual_length);
+      h->notes.push_back(buf);
     }
-    if (seg.wires.empty()) kept.notes.push_back("Segment " + seg.id + ": no wire routed through it");
+    if (seg.wires.empty()) h->notes.push_back("Segment " + seg.id + ": no wire routed through it");
   }
+}
+
+KblHarness ReadContainer(const xmlNode* root, const std::string& path,
+                         const KblReadOptions& options) {
+  KblHarness h;
+  CheckContainer(root, &h.version);
+  const IdIndex ids = kbl::IndexIds(root);
+  h.drawing.source_path = path;
+  h.drawing.length_unit = "mm";
+  NodeMap nodes = ReadNodes(root, ids);
+  // Segments.
+  std::vector<const xmlNode*> seg_nodes = Children(root, "Segment");
+  if (seg_nodes.empty()) throw InvalidInput("KBL_container holds no Segment");
+  std::map<std::string, int> seg_index;
+  for (const xmlNode* sn : seg_nodes) {
+    KblSegment seg = ReadSegment(sn, nodes, ids);
+    DrawnCable cable;
+    cable.name = seg.id;
+    cable.source = CableSourceKind::kCurve;
+    cable.centreline = SegmentCurve(sn, seg.id, ids, options);
+    seg.drawn_length = cable.centreline.s[cable.centreline.size() - 1];
+    seg_index[seg.id] = static_cast<int>(h.segments.size());
+    h.segments.push_back(std::move(seg));
+    h.drawing.cables.push_back(std::move(cable));
+  }
+
+  AddRoutings(root, ids, seg_index, &h);
+  const std::vector<bool> refused = PlaceNodes(&nodes, options, &h);
+  KblHarness kept = WithoutRefused(std::move(h), refused, options);
+  AddLengthNotes(&kept);
   return kept;
 }
 

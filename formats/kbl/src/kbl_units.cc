@@ -17,10 +17,11 @@ struct Unit {
 
 double Prefix(const std::string& prefix, const std::string& unit_id) {
   static const std::map<std::string, double> kPrefix = {
-      {"", 1.0},      {"kilo", 1e3},   {"hecto", 1e2}, {"deca", 1e1},  {"deci", 1e-1},
+      {"", 1.0},       {"kilo", 1e3},   {"hecto", 1e2},  {"deca", 1e1}, {"deci", 1e-1},
       {"centi", 1e-2}, {"milli", 1e-3}, {"micro", 1e-6}, {"nano", 1e-9}};
   const auto it = kPrefix.find(prefix);
-  if (it == kPrefix.end()) throw InvalidInput("Unit " + unit_id + ": unknown Si_prefix '" + prefix + "'");
+  if (it == kPrefix.end())
+    throw InvalidInput("Unit " + unit_id + ": unknown Si_prefix '" + prefix + "'");
   return it->second;
 }
 
@@ -34,7 +35,8 @@ Unit ReadUnit(const xmlNode* u) {
     if (si == "metre" && dim == "square") return {Quantity::kArea, p * p};
     // The SI base unit of mass is the kilogram; KBL names the gram with prefixes.
     if (si == "gram" && (dim.empty() || dim == "none")) return {Quantity::kMass, 1e-3 * p};
-    throw InvalidInput("Unit " + id + ": unsupported unit '" + si + (dim.empty() ? "" : " " + dim) + "'");
+    throw InvalidInput("Unit " + id + ": unsupported unit '" + si + (dim.empty() ? "" : " " + dim) +
+                       "'");
   }
   // Units outside SI's base set are named; those a harness file uses for wires.
   static const std::map<std::string, Unit> kNamed = {
@@ -57,10 +59,14 @@ Unit ReadUnit(const xmlNode* u) {
 
 const char* ToString(Quantity q) {
   switch (q) {
-    case Quantity::kLength: return "length";
-    case Quantity::kArea: return "area";
-    case Quantity::kMass: return "mass";
-    case Quantity::kLinearDensity: return "mass per length";
+    case Quantity::kLength:
+      return "length";
+    case Quantity::kArea:
+      return "area";
+    case Quantity::kMass:
+      return "mass";
+    case Quantity::kLinearDensity:
+      return "mass per length";
   }
   return "?";
 }

@@ -30,14 +30,15 @@ void IndexInto(const xmlNode* n, std::unordered_map<std::string, const xmlNode*>
 }  // namespace
 
 XmlDoc ParseXml(const std::string& bytes) {
-  if (bytes.size() > static_cast<size_t>(INT_MAX)) throw InvalidInput("too large for the XML parser");
+  if (bytes.size() > static_cast<size_t>(INT_MAX))
+    throw InvalidInput("too large for the XML parser");
   // No XML_PARSE_NOENT (entities stay references), no DTDLOAD/DTDVALID (nothing fetched or
   // expanded from a DTD), NONET (never the network), no HUGE (libxml2 keeps its depth and size
   // limits).
   const int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING;
   xmlResetLastError();
-  XmlDoc doc(xmlReadMemory(bytes.data(), static_cast<int>(bytes.size()), "kbl.xml", nullptr,
-                           options));
+  XmlDoc doc(
+      xmlReadMemory(bytes.data(), static_cast<int>(bytes.size()), "kbl.xml", nullptr, options));
   if (!doc) {
     const xmlError* e = xmlGetLastError();
     std::string why = e && e->message ? Trim(e->message) : "unreadable";
@@ -47,7 +48,9 @@ XmlDoc ParseXml(const std::string& bytes) {
   return doc;
 }
 
-std::string Name(const xmlNode* n) { return n && n->name ? reinterpret_cast<const char*>(n->name) : ""; }
+std::string Name(const xmlNode* n) {
+  return n && n->name ? reinterpret_cast<const char*>(n->name) : "";
+}
 
 std::string Attribute(const xmlNode* n, const char* name) {
   for (const xmlAttr* a = n->properties; a; a = a->next) {

@@ -23,8 +23,8 @@ TEST(KblBundle, OneWireIsItsOwnBundle) {
 }
 
 TEST(KblBundle, SeveralWiresFillADiscAtThePackingFractionAndTheTightestBendLimitWins) {
-  const KblBundle b = BundleOf({Wire(0.002, 0.01, 0.006), Wire(0.002, 0.01, 0.006),
-                                Wire(0.003, 0.02, 0.009)});
+  const KblBundle b =
+      BundleOf({Wire(0.002, 0.01, 0.006), Wire(0.002, 0.01, 0.006), Wire(0.003, 0.02, 0.009)});
   EXPECT_NEAR(b.diameter, std::sqrt((4e-6 + 4e-6 + 9e-6) / kBundlePackingFraction), 1e-15);
   EXPECT_NEAR(b.linear_density, 0.04, 1e-15);
   EXPECT_DOUBLE_EQ(b.min_bend_radius, 0.009);
@@ -34,7 +34,8 @@ TEST(KblBundle, SeveralWiresFillADiscAtThePackingFractionAndTheTightestBendLimit
 TEST(KblBundle, MassOnlyWhenEveryWireGivesIt) {
   // One wire without mass data: no mass from the wires at all (the estimate takes over), while
   // the diameter still counts both.
-  const KblBundle b = BundleOf({Wire(0.010, std::nullopt, std::nullopt), Wire(0.001, 0.01, std::nullopt)});
+  const KblBundle b =
+      BundleOf({Wire(0.010, std::nullopt, std::nullopt), Wire(0.001, 0.01, std::nullopt)});
   EXPECT_EQ(b.linear_density, 0.0);
   EXPECT_NEAR(b.diameter, std::sqrt(1.01e-4 / kBundlePackingFraction), 1e-15);
   EXPECT_EQ(b.min_bend_radius, 0.0);

@@ -74,7 +74,8 @@ TEST(KblFile, GeneratorHarnessHasThreeSegmentsMeetingAtOneNode) {
   // Connection -> wire occurrence -> General_wire: 1.6, 1.6 and 5.1 mm wires in Segment_1.
   ASSERT_EQ(s1.wires.size(), 3u);
   std::multiset<double> diameters;
-  for (const KblWire& w : s1.wires) diameters.insert(std::round(1e4 * w.outside_diameter.value()) / 10);
+  for (const KblWire& w : s1.wires)
+    diameters.insert(std::round(1e4 * w.outside_diameter.value()) / 10);
   EXPECT_EQ(diameters, (std::multiset<double>{1.6, 1.6, 5.1}));
   for (const KblWire& w : s1.wires) EXPECT_TRUE(w.linear_density.has_value());
   EXPECT_EQ(SegmentById(h, "Segment_2").wires.size(), 1u);
@@ -171,13 +172,15 @@ TEST_F(KblBadInput, OtherNamespaceVersion) {
 }
 
 TEST_F(KblBadInput, DanglingControlPoint) {
-  EXPECT_THROW_WITH(ReadKblFile(Edited("<Control_points>Cartesian_point_", "<Control_points>Nowhere_1 Cartesian_point_")),
+  EXPECT_THROW_WITH(ReadKblFile(Edited("<Control_points>Cartesian_point_",
+                                       "<Control_points>Nowhere_1 Cartesian_point_")),
                     FileError, "reference 'Nowhere_1' names no element");
 }
 
 TEST_F(KblBadInput, DanglingRoutedSegment) {
-  EXPECT_THROW_WITH(ReadKblFile(Edited("<Segments>Segment_1</Segments>", "<Segments>Segment_9</Segments>")),
-                    FileError, "'Segment_9' names no Segment");
+  EXPECT_THROW_WITH(
+      ReadKblFile(Edited("<Segments>Segment_1</Segments>", "<Segments>Segment_9</Segments>")),
+      FileError, "'Segment_9' names no Segment");
 }
 
 TEST_F(KblBadInput, WireThroughUnconnectedSegmentsIsANote) {
@@ -187,10 +190,13 @@ TEST_F(KblBadInput, WireThroughUnconnectedSegmentsIsANote) {
   const size_t seg2 = text.find("<Segment id=\"Segment_2\">");
   const size_t end_node = text.find("<End_node>Node_2</End_node>", seg2);
   ASSERT_NE(end_node, std::string::npos);
-  text.replace(end_node, std::string("<End_node>Node_2</End_node>").size(), "<End_node>Node_4</End_node>");
+  text.replace(end_node, std::string("<End_node>Node_2</End_node>").size(),
+               "<End_node>Node_4</End_node>");
   const KblHarness h = ReadKblFile(Write(text), {.node_tolerance = 1.0});
   bool noted = false;
-  for (const std::string& n : h.notes) noted = noted || n.find("Routing id_338_0: its segments are not connected (Segment_2") != std::string::npos;
+  for (const std::string& n : h.notes)
+    noted = noted || n.find("Routing id_338_0: its segments are not connected (Segment_2") !=
+                         std::string::npos;
   EXPECT_TRUE(noted);
   const KblHarness ok = ReadKblFile(Sample("generator"));
   for (const std::string& n : ok.notes) EXPECT_EQ(n.find("not connected"), std::string::npos) << n;

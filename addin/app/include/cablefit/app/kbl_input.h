@@ -47,7 +47,7 @@ struct KblInput {
   /// them field by field (see docs/kbl.md).
   HarnessConfig config;
   std::map<std::string, json::Json> cable_json;  ///< by segment id: its "kbl" object of the JSON
-  std::vector<std::string> notes;      ///< the reader's findings and the defaults taken
+  std::vector<std::string> notes;                ///< the reader's findings and the defaults taken
 };
 
 /// Reads `path` (ReadKblFile) and builds the above. Throws FileError.

@@ -15,34 +15,34 @@ namespace cablefit {
 
 /// One wire (or multi-core cable) routed through a segment, with its part's data.
 struct KblWire {
-  std::string id;                            ///< the wire occurrence's XML id
-  std::string part;                          ///< the General_wire's XML id
-  std::optional<double> outside_diameter;    ///< [m]
-  std::optional<double> conductor_area;      ///< [m^2] Cross_section_area of the part
-  std::optional<double> linear_density;      ///< [kg/m] from Mass_information per length
-  std::optional<double> min_bend_radius;     ///< [m] Bend_radius of the part
+  std::string id;                          ///< the wire occurrence's XML id
+  std::string part;                        ///< the General_wire's XML id
+  std::optional<double> outside_diameter;  ///< [m]
+  std::optional<double> conductor_area;    ///< [m^2] Cross_section_area of the part
+  std::optional<double> linear_density;    ///< [kg/m] from Mass_information per length
+  std::optional<double> min_bend_radius;   ///< [m] Bend_radius of the part
 };
 
 /// A Fixing_assignment: a clip (or other fixing) on the segment.
 struct KblFixing {
-  std::string id;            ///< the Fixing_occurrence's XML id
-  std::string name;          ///< its <Id>
-  std::string type;          ///< the Fixing part's Fixing_type ("" when not given)
-  double location = 0.0;     ///< 0..1 along the segment from its start node
+  std::string id;         ///< the Fixing_occurrence's XML id
+  std::string name;       ///< its <Id>
+  std::string type;       ///< the Fixing part's Fixing_type ("" when not given)
+  double location = 0.0;  ///< 0..1 along the segment from its start node
 };
 
 /// A Protection_area (tape, tube) over part of a segment. Read and reported, not yet given
 /// stiffness or mass of its own.
 struct KblProtection {
-  std::string id;               ///< the Wire_protection_occurrence's XML id
-  std::string type;             ///< the part's Protection_type ("" when not given)
+  std::string id;                 ///< the Wire_protection_occurrence's XML id
+  std::string type;               ///< the part's Protection_type ("" when not given)
   double start = 0.0, end = 1.0;  ///< 0..1 along the segment
 };
 
 /// One end of a segment: the node and what sits there.
 struct KblSegmentEnd {
-  std::string node;        ///< the Node's XML id
-  std::string node_name;   ///< its <Id>
+  std::string node;       ///< the Node's XML id
+  std::string node_name;  ///< its <Id>
   /// The node's Referenced_components that are connectors or terminals (their <Id> or XML id);
   /// empty when nothing is placed there.
   std::vector<std::string> connectors;
@@ -51,12 +51,12 @@ struct KblSegmentEnd {
 
 /// What the file says about one segment; same order as the drawing's cables.
 struct KblSegment {
-  std::string id;          ///< XML id (the drawing's cable name)
-  std::string name;        ///< its <Id> (a CAD path, often long)
+  std::string id;    ///< XML id (the drawing's cable name)
+  std::string name;  ///< its <Id> (a CAD path, often long)
   KblSegmentEnd start, end;
-  std::optional<double> virtual_length;    ///< [m]
+  std::optional<double> virtual_length;      ///< [m]
   std::optional<double> cross_section_area;  ///< [m^2] of Cross_section_area_information
-  double drawn_length = 0.0;               ///< [m] of the evaluated centre curve(s)
+  double drawn_length = 0.0;                 ///< [m] of the evaluated centre curve(s)
   /// Largest distance between the curve's ends and its nodes' positions [m] (0 where a node's
   /// position is known only from this segment).
   double node_miss = 0.0;
