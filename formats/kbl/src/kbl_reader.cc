@@ -291,6 +291,11 @@ KblSegment ReadSegment(const xmlNode* sn, const NodeMap& nodes, const IdIndex& i
     const std::string pwhat = "Protection_area " + Attribute(pa, "id") + " of " + what;
     p.start = kbl::ParseNumber(ChildText(pa, "Start_location"), pwhat + ": Start_location");
     p.end = kbl::ParseNumber(ChildText(pa, "End_location"), pwhat + ": End_location");
+    if (!(0 <= p.start && p.start <= 1 && 0 <= p.end && p.end <= 1)) {
+      throw InvalidInput(pwhat + ": Start_location or End_location outside 0..1");
+    }
+    // Nothing in KBL orders them: an area given from its far end is the same interval.
+    if (p.start > p.end) std::swap(p.start, p.end);
     p.id = ChildText(pa, "Associated_protection");
     const xmlNode* occ = Resolve(ids, p.id, pwhat);
     const std::string part = ChildText(occ, "Part");

@@ -202,6 +202,16 @@ TEST_F(KblBadInput, WireThroughUnconnectedSegmentsIsANote) {
   for (const std::string& n : ok.notes) EXPECT_EQ(n.find("not connected"), std::string::npos) << n;
 }
 
+TEST_F(KblBadInput, ProtectionAreaOutsideTheSegment) {
+  std::string text = testing::ReadTextFile(Sample("generator"));
+  const size_t at = text.find("<End_location>1.000000</End_location>");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("<End_location>1.000000</End_location>").size(),
+               "<End_location>1.5</End_location>");
+  EXPECT_THROW_WITH(ReadKblFile(Write(text)), FileError,
+                    "Protection_area Protection_area_1 of Segment Segment_1: Start_location");
+}
+
 TEST_F(KblBadInput, MissingUnit) {
   EXPECT_THROW_WITH(ReadKblFile(Edited("<Si_unit_name>metre</Si_unit_name>", "")), FileError,
                     "Unit ");

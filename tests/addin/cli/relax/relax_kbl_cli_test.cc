@@ -40,7 +40,8 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
     for (const char* suffix : {".step", ".json", "-deviation.png"})
       EXPECT_TRUE(fs::exists(out / (stem + suffix))) << stem << suffix;
   }
-  EXPECT_TRUE(fs::exists(out / "report.html"));
+  ASSERT_TRUE(fs::exists(out / "report.html"));
+  EXPECT_NE(testing::ReadTextFile(out / "report.html").find("the cable's own limit"), std::string::npos);
 
   const Json movo = json::ReadJsonFile((out / (std::string(kMovo) + ".json")).string());
   std::set<std::string> names;
