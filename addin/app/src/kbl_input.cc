@@ -42,6 +42,13 @@ KblBundle BundleOf(const std::vector<KblWire>& wires) {
   return b;
 }
 
+double ProtectionMassPerLength(const std::vector<KblProtection>& protections) {
+  double sum = 0.0;
+  for (const KblProtection& p : protections)
+    if (p.linear_density) sum += *p.linear_density * (p.end - p.start);
+  return sum;
+}
+
 bool IsKblPath(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -80,6 +87,16 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
       if (bundle.linear_density > 0) {
         m.linear_density = bundle.linear_density;
         source += ", mass from the wires";
+        // A rod has one material along its length: a protection's mass is spread over the
+        // whole segment (right in total, not in where it sits); its stiffness is not added.
+        const double protection = ProtectionMassPerLength(seg.protections);
+        if (protection > 0) {
+          m.linear_density += protection;
+          source += " and protections (spread over the segment)";
+          assumed.push_back(
+              "protection mass spread over the segment, protection stiffness not "
+              "modelled");
+        }
       } else {
         assumed.push_back("mass per length estimated from the diameter (not every wire gives one)");
       }
@@ -131,11 +148,14 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
     }
     json::Json protections = json::Json::array();
     for (const KblProtection& p : seg.protections) {
-      protections.push_back({{"id", p.id},
-                             {"type", p.type},
-                             {"start", p.start},
-                             {"end", p.end},
-                             {"modelled", false}});
+      protections.push_back(
+          {{"id", p.id},
+           {"type", p.type},
+           {"start", p.start},
+           {"end", p.end},
+           {"linear_density", OptionalNumber(p.linear_density)},
+           {"mass_added", bundle.linear_density > 0 && p.linear_density.has_value()},
+           {"stiffness_added", false}});
     }
     auto end_json = [](const KblSegmentEnd& e) {
       return json::Json{{"node", e.node},

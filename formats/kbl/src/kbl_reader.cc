@@ -187,6 +187,19 @@ const xmlNode* WireOccurrence(const IdIndex& ids, const std::string& ref, const 
   return n;
 }
 
+// A part's Mass_information when it is per length (wires, tapes, tubes); a plain mass (a part's
+// weight) says nothing about the bundle's density and gives none. A broken unit is an error.
+std::optional<double> LinearDensityOf(const xmlNode* part, const IdIndex& ids) {
+  const xmlNode* v = Child(part, "Mass_information");
+  if (!v) return std::nullopt;
+  try {
+    return kbl::SiValue(v, Quantity::kLinearDensity, ids);
+  } catch (const InvalidInput&) {
+    kbl::SiValue(v, Quantity::kMass, ids);
+    return std::nullopt;
+  }
+}
+
 KblWire ReadWire(const xmlNode* occ, const IdIndex& ids) {
   KblWire w;
   w.id = Attribute(occ, "id");
@@ -203,15 +216,7 @@ KblWire ReadWire(const xmlNode* occ, const IdIndex& ids) {
     w.min_bend_radius =
         std::max(w.min_bend_radius.value_or(0.0), kbl::SiValue(v, Quantity::kLength, ids));
   }
-  // Mass_information of a wire part is per length; a plain mass (a part's weight) says nothing
-  // about the bundle's density and is left out.
-  if (const xmlNode* v = Child(part, "Mass_information")) {
-    try {
-      w.linear_density = kbl::SiValue(v, Quantity::kLinearDensity, ids);
-    } catch (const InvalidInput&) {
-      kbl::SiValue(v, Quantity::kMass, ids);  // still an error when the unit is broken
-    }
-  }
+  w.linear_density = LinearDensityOf(part, ids);
   return w;
 }
 
@@ -298,9 +303,12 @@ KblSegment ReadSegment(const xmlNode* sn, const NodeMap& nodes, const IdIndex& i
     if (p.start > p.end) std::swap(p.start, p.end);
     p.id = ChildText(pa, "Associated_protection");
     const xmlNode* occ = Resolve(ids, p.id, pwhat);
-    const std::string part = ChildText(occ, "Part");
-    if (!part.empty())
-      p.type = ChildText(Resolve(ids, part, Name(occ) + " " + p.id), "Protection_type");
+    const std::string part_id = ChildText(occ, "Part");
+    if (!part_id.empty()) {
+      const xmlNode* part = Resolve(ids, part_id, Name(occ) + " " + p.id);
+      p.type = ChildText(part, "Protection_type");
+      p.linear_density = LinearDensityOf(part, ids);
+    }
     seg.protections.push_back(std::move(p));
   }
   return seg;

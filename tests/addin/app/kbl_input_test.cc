@@ -41,5 +41,14 @@ TEST(KblBundle, MassOnlyWhenEveryWireGivesIt) {
   EXPECT_EQ(b.min_bend_radius, 0.0);
 }
 
+TEST(KblBundle, ProtectionMassIsWeightedByTheShareOfTheSegmentItCovers) {
+  KblProtection tape;
+  tape.start = 0.25;
+  tape.end = 0.75;
+  tape.linear_density = 0.006;
+  KblProtection unknown;  // no mass per length: adds nothing
+  EXPECT_NEAR(ProtectionMassPerLength({tape, unknown}), 0.003, 1e-15);
+}
+
 }  // namespace
 }  // namespace cablefit::addin

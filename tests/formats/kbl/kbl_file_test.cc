@@ -70,7 +70,10 @@ TEST(KblFile, GeneratorHarnessHasThreeSegmentsMeetingAtOneNode) {
   EXPECT_EQ(s1.fixings[0].id, "Fixing_occurrence_1");
   EXPECT_NEAR(s1.fixings[0].location, 0.886766, 1e-9);
   EXPECT_EQ(s1.fixings[0].type, "SPT");
-  EXPECT_EQ(s1.protections.size(), 1u);
+  ASSERT_EQ(s1.protections.size(), 1u);
+  EXPECT_EQ(s1.protections[0].type, "TAPE");
+  EXPECT_NEAR(s1.protections[0].start, 0.045496, 1e-12);
+  EXPECT_NEAR(s1.protections[0].linear_density.value(), 0.006, 1e-15);
   // Connection -> wire occurrence -> General_wire: 1.6, 1.6 and 5.1 mm wires in Segment_1.
   ASSERT_EQ(s1.wires.size(), 3u);
   std::multiset<double> diameters;

@@ -33,6 +33,10 @@ struct KblBundle {
 /// The bundle of the wires routed through a segment.
 KblBundle BundleOf(const std::vector<KblWire>& wires);
 
+/// [kg/m] the protections' mass per length averaged over their segment: each part's mass per
+/// length times the share of the segment it covers.
+double ProtectionMassPerLength(const std::vector<KblProtection>& protections);
+
 /// True for the extension ".kbl" (any case).
 bool IsKblPath(const std::string& path);
 /// True for a ".kbl" path, or a file of another extension (".xml") whose content is a KBL

@@ -31,12 +31,13 @@ struct KblFixing {
   double location = 0.0;  ///< 0..1 along the segment from its start node
 };
 
-/// A Protection_area (tape, tube) over part of a segment. Read and reported, not yet given
-/// stiffness or mass of its own.
+/// A Protection_area (tape, tube) over part of a segment.
 struct KblProtection {
   std::string id;                 ///< the Wire_protection_occurrence's XML id
   std::string type;               ///< the part's Protection_type ("" when not given)
   double start = 0.0, end = 1.0;  ///< 0..1 along the segment
+  /// [kg/m] the part's Mass_information when it is per length (unset for a plain mass).
+  std::optional<double> linear_density;
 };
 
 /// One end of a segment: the node and what sits there.
