@@ -342,6 +342,44 @@ write('cad/stl-huge/.keep', '')
 entry('stl-huge', 'relax cad/stl-huge/tubes.stl --out {out}', 2, 'cad/stl-huge/tubes.stl',
       'more than the limit', setup='sparse:cad/stl-huge/tubes.stl:2200000000')
 
+# ---------------------------------------------------------------- KBL harness files (relax) ---
+gearbox = open(os.path.join(ROOT, 'tests/data/kbl/kblxml_2.3sr-1_000971250_ltgs_getriebe_170718.kbl')).read()
+
+
+def kbl_edit(text, old, new):
+    assert old in text, old
+    return text.replace(old, new, 1)
+
+
+def kbl_moved_node(text, node, dx):
+    """The sample with `node`'s own Cartesian_point moved dx mm in x."""
+    at = text.index('<Node id="%s"' % node)
+    cp = text.index('<Cartesian_point>', at) + len('<Cartesian_point>')
+    cp_id = text[cp:text.index('<', cp)]
+    d = text.index('<Cartesian_point id="%s">' % cp_id)
+    c0 = text.index('<Coordinates>', d) + len('<Coordinates>')
+    c1 = text.index('</Coordinates>', c0)
+    return text[:c0] + '%.6f' % (float(text[c0:c1]) + dx) + text[c1:]
+
+
+cad_entry('kbl-not-xml', 'harness.kbl', b'KBL? no: plain text\n', 'not XML')
+cad_entry('kbl-truncated', 'harness.kbl', gearbox[:4000].encode(), 'not XML')
+cad_entry('kbl-wrong-root', 'harness.kbl', b'<?xml version="1.0"?>\n<Harness id="h"/>\n',
+          'not a KBL_container')
+cad_entry('kbl-wrong-version', 'harness.kbl',
+          kbl_edit(gearbox, 'KBL2.3/KBLSchema', 'KBL3.0/KBLSchema').encode(), 'only KBL 2.x')
+cad_entry('kbl-dangling-point', 'harness.kbl',
+          kbl_edit(gearbox, '<Control_points>Cartesian_point_',
+                   '<Control_points>Nowhere_1 Cartesian_point_').encode(),
+          "reference 'Nowhere_1' names no element")
+cad_entry('kbl-dangling-routing', 'harness.kbl',
+          kbl_edit(gearbox, '<Segments>Segment_1</Segments>', '<Segments>Segment_9</Segments>').encode(),
+          "'Segment_9' names no Segment")
+cad_entry('kbl-missing-unit', 'harness.kbl',
+          kbl_edit(gearbox, '<Si_unit_name>metre</Si_unit_name>', '').encode(), 'Unit ')
+cad_entry('kbl-curve-misses-node', 'harness.kbl', kbl_moved_node(gearbox, 'Node_2', 50.0).encode(),
+          'Segment Segment_1: its centre curve ends 50.000 mm from its node')
+
 with open(os.path.join(HERE, 'expected.tsv'), 'w') as f:
     f.write('# id\tsetup\texit\tfile named in the error\tmessage substring\tcablefit arguments\n')
     for r in rows:

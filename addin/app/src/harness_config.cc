@@ -225,8 +225,32 @@ CableConfig HarnessConfig::For(const std::string& name) const {
   Overlay(&c.start, top.start);
   Overlay(&c.end, top.end);
   Overlay(&c.auto_clips, top.auto_clips);
+  if (top.min_bend_radius) {
+    c.min_bend_radius = top.min_bend_radius;
+    c.min_bend_radius_source = top.min_bend_radius_source;
+  }
   c.supports = top.supports;
   return c;
+}
+
+CableConfig Overlaid(CableConfig base, const CableConfig& top) {
+  if (top.material) {
+    base.material = top.material;
+    base.material_source = top.material_source;
+  }
+  Overlay(&base.diameter, top.diameter);
+  if (top.diameter) base.diameter_from_default = top.diameter_from_default;
+  Overlay(&base.length, top.length);
+  Overlay(&base.gravity, top.gravity);
+  Overlay(&base.start, top.start);
+  Overlay(&base.end, top.end);
+  Overlay(&base.auto_clips, top.auto_clips);
+  if (top.min_bend_radius) {
+    base.min_bend_radius = top.min_bend_radius;
+    base.min_bend_radius_source = top.min_bend_radius_source;
+  }
+  if (!top.supports.empty()) base.supports = top.supports;
+  return base;
 }
 
 double CableLength::For(double drawn_length) const {

@@ -128,6 +128,11 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
                         cc.length->ToString() + "), drawn " + Metres(length));
   }
   out.spec.gravity = cc.gravity.value_or(config.gravity);
+  if (cc.min_bend_radius) {
+    out.min_bend_radius_limit = *cc.min_bend_radius;
+    out.notes.push_back("bend radius limit " + Metres(*cc.min_bend_radius) + " (" +
+                        cc.min_bend_radius_source + ")");
+  }
 
   // Twist-free frames along the drawing: clamps hold the drawn cross-section orientation, with
   // the start normal pointing as far "up" (against gravity) as the tangent allows.
@@ -286,7 +291,8 @@ void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* out) {
     }
   }
   r.min_bend_radius = max_kappa > 0 ? 1.0 / max_kappa : std::numeric_limits<double>::infinity();
-  r.bend_limit = min_bend_radius_factor * spec.material.diameter;
+  r.bend_limit = r.setup.min_bend_radius_limit > 0 ? r.setup.min_bend_radius_limit
+                                                  : min_bend_radius_factor * spec.material.diameter;
   r.bend_flag = r.min_bend_radius < r.bend_limit;
 
   // Unknown (NaN) when the solution carries no internal force (a cable solved within a network).

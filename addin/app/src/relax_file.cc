@@ -14,6 +14,7 @@
 #include "cablefit/formats/file_kind.h"
 #include "cablefit/app/provenance.h"
 #include "cablefit/formats/mesh_file.h"
+#include "cablefit/app/kbl_input.h"
 #include "relax_route.h"
 
 namespace cablefit::addin {
@@ -97,14 +98,15 @@ std::string ImplausibleMeshUnit(const HarnessDrawing& d, double mesh_unit) {
 
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   if (IsCadPath(path)) return ReadCadFile(path);
+  if (IsKblInput(path)) return ReadKblInput(path, HarnessConfig{}).drawing;
   const FileKind kind = SniffFileKind(path);
   if (kind == FileKind::kJson) {
     throw FileError(path, "is a JSON file, not CAD or a mesh: a recording case goes to 'cablefit "
                           "diagnose', a harness.json to 'cablefit relax --config'");
   }
   if (!IsMeshPath(path)) {
-    throw FileError(path,
-                    "unknown extension (expected STEP, IGES or a mesh: STL, OBJ, PLY, glTF...)");
+    throw FileError(path, "unknown extension (expected STEP, IGES, KBL or a mesh: STL, OBJ, PLY, "
+                          "glTF...)");
   }
   if (kind == FileKind::kPlyPoints) {
     throw FileError(path, "is a PLY point cloud (no faces), not a mesh: relax needs tube surfaces; "
@@ -145,6 +147,10 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   // Branch ends recovered from a skeleton sit within a fraction of the tube radius of each other.
   FindJunctions(&d, 0.25 * min_diameter);
   return d;
+}
+
+const HarnessConfig& ConfigOf(const RelaxedFile& f, const HarnessConfig& config) {
+  return f.own_config ? *f.own_config : config;
 }
 
 double OutputDiameter(const RelaxedFile& f, int cable, const HarnessConfig& config) {
@@ -227,6 +233,7 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   j["min_bend_radius_factor"] = config.min_bend_radius_factor;
   j["not_cables"] = f.drawing.skipped;  // what the input drew that was not taken as a cable, and why
   if (!f.drawing.warnings.empty()) j["warnings"] = f.drawing.warnings;
+  if (!f.notes.empty()) j["input_notes"] = f.notes;  // what reading found or assumed (KBL)
   if (!f.networks.empty()) {
     j["networks"] = f.networks;
     j["networks_meaning"] =
@@ -237,6 +244,8 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
     if (f.cables[i]) {
       cables.push_back(CableToJson(*f.cables[i], f.drawing.cables[i]));
+      if (const auto it = f.cable_json.find(f.drawing.cables[i].name); it != f.cable_json.end())
+        cables.back()["kbl"] = it->second;
     } else {
       // What the failed cable was, so the reader can see what could not be relaxed.
       const DrawnCable& drawn = f.drawing.cables[i];
@@ -245,6 +254,8 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
                         {"written_as", "drawn (not relaxed)"},
                         {"drawn_length", json::NumberOrNull(drawn.centreline.ChordLength())},
                         {"diameter", OutputDiameter(f, static_cast<int>(i), config)}});
+      if (const auto it = f.cable_json.find(f.drawing.cables[i].name); it != f.cable_json.end())
+        cables.back()["kbl"] = it->second;
     }
   }
   j["cables"] = cables;

@@ -208,6 +208,12 @@ std::string VerdictSection(const std::vector<RelaxedFile>& files, double seconds
 
 void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& files,
                       const HarnessConfig& config, double seconds) {
+  auto any_own_bend_limit = [](const std::vector<RelaxedFile>& fs) {
+    for (const RelaxedFile& f : fs)
+      for (const auto& c : f.cables)
+        if (c && c->setup.min_bend_radius_limit > 0) return true;
+    return false;
+  };
   std::ostringstream h;
   h << PageHead("cablefit relax");
   h << VerdictSection(files, seconds);
@@ -215,7 +221,11 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
        "rod under gravity from its drawn shape (nearest equilibrium), ends clamped at their drawn "
        "pose unless harness.json says otherwise. Deviation = distance of the relaxed centreline "
        "to the drawn route. Bend radius flagged below "
-    << FormatNumber(config.min_bend_radius_factor) << " diameters.</p>\n"
+    << FormatNumber(config.min_bend_radius_factor) << " diameters"
+    << (any_own_bend_limit(files) ? ", or below the cable's own limit where its data give one (a KBL "
+                                 "file's wire Bend_radius)"
+                               : "")
+    << ".</p>\n"
     << "<table class=\"sortable\"><thead><tr><th>input</th><th>cable</th><th>length</th>"
        "<th>diameter</th><th>material</th><th>supports</th><th>max deviation</th><th>rms</th>"
        "<th>min bend radius</th><th>twist</th><th>solver</th><th>notes</th></tr></thead><tbody>\n";

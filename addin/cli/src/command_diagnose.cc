@@ -60,7 +60,8 @@ std::string WithWhereItBelongs(const std::string& path, const std::string& line)
     case FileKind::kIges:
     case FileKind::kStl:
     case FileKind::kObj:
-    case FileKind::kPlyMesh: return line + "; CAD files and meshes go to 'cablefit relax'";
+    case FileKind::kPlyMesh:
+    case FileKind::kKbl: return line + "; CAD, KBL files and meshes go to 'cablefit relax'";
     default: return line;
   }
 }

@@ -21,6 +21,7 @@
 #include "output_folder.h"
 #include "cablefit/app/cable_selection.h"
 #include "progress_bar.h"
+#include "cablefit/app/kbl_input.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
@@ -61,10 +62,11 @@ std::vector<std::string> ExpandInputs(const std::vector<std::string>& inputs,
       std::vector<std::string> found;
       for (const auto& entry : fs::directory_iterator(p, ec)) {
         const std::string f = entry.path().string();
-        if (entry.is_regular_file() && (IsCadPath(f) || IsMeshPath(f))) found.push_back(f);
+        if (entry.is_regular_file() && (IsCadPath(f) || IsKblPath(f) || IsMeshPath(f)))
+          found.push_back(f);
       }
       std::sort(found.begin(), found.end());
-      if (found.empty()) failures->push_back(p + ": folder holds no STEP, IGES or mesh file");
+      if (found.empty()) failures->push_back(p + ": folder holds no STEP, IGES, KBL or mesh file");
       files.insert(files.end(), found.begin(), found.end());
     } else if (fs::exists(p, ec)) {
       files.push_back(p);
@@ -97,9 +99,13 @@ std::vector<std::string> UniqueStems(const std::vector<std::string>& files) {
 
 std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
   // A bend radius a thousand times the cable's length is a straight cable drawn with round-off.
-  char bend[64];
+  char bend[160];
   if (!std::isfinite(r.min_bend_radius) || r.min_bend_radius > 1e3 * r.setup.spec.length) {
     std::snprintf(bend, sizeof bend, "straight");
+  } else if (r.bend_flag && r.setup.min_bend_radius_limit > 0) {
+    // A cable's own limit (a KBL file's wires) is not the run's factor: say which and where.
+    std::snprintf(bend, sizeof bend, "%.1f mm (TOO TIGHT: the cable's limit %.1f mm, at s=%.3f m)",
+                  1e3 * r.min_bend_radius, 1e3 * r.bend_limit, r.min_bend_radius_s);
   } else {
     std::snprintf(bend, sizeof bend, "%.1f mm%s", 1e3 * r.min_bend_radius,
                   r.bend_flag ? " (TOO TIGHT)" : "");
@@ -168,13 +174,24 @@ int RunRelax(const RelaxArgs& a) {
     try {
       std::unique_lock lock(cad_mutex, std::defer_lock);
       if (IsCadPath(f.input)) lock.lock();
-      f.drawing = ReadHarnessInput(f.input, unit);
+      if (IsKblInput(f.input)) {
+        // The file's own physics per segment, the user's harness.json over it.
+        KblInput kbl = ReadKblInput(f.input, config);
+        f.drawing = std::move(kbl.drawing);
+        f.own_config = std::make_shared<const HarnessConfig>(std::move(kbl.config));
+        f.cable_json = std::move(kbl.cable_json);
+        f.notes = std::move(kbl.notes);
+      } else {
+        f.drawing = ReadHarnessInput(f.input, unit);
+      }
       ApplyCableSelection(config, &f.drawing);
       f.read_ok = true;
       for (const std::string& why : f.drawing.skipped)
         bar.PrintLine(stderr, "cablefit: note: " + f.input + ": not taken as a cable: " + why);
       for (const std::string& why : f.drawing.warnings)
         bar.PrintLine(stderr, "cablefit: warning: " + f.input + ": " + why);
+      for (const std::string& note : f.notes)
+        bar.PrintLine(stderr, "cablefit: note: " + f.input + ": " + note);
       f.cables.resize(f.drawing.cables.size());
       f.cable_errors.resize(f.drawing.cables.size());
     } catch (...) {
@@ -210,7 +227,7 @@ int RunRelax(const RelaxArgs& a) {
     boxes[static_cast<size_t>(i)] = SolidBoxes(f.drawing);
     if (!f.read_ok) continue;
     try {
-      for (RelaxGroup& g : GroupCables(f.drawing, boxes[static_cast<size_t>(i)], config))
+      for (RelaxGroup& g : GroupCables(f.drawing, boxes[static_cast<size_t>(i)], ConfigOf(f, config)))
         jobs.push_back({i, std::move(g)});
     } catch (...) {
       fail(f, ErrorText(std::current_exception()));
@@ -228,7 +245,7 @@ int RunRelax(const RelaxArgs& a) {
     const auto t0 = Clock::now();
     const CancellationScope deadline(a.timeout);  // the solver checks it (core/base/cancellation.h)
     GroupOutcome g = RelaxGroupCables(f.drawing, job.group, boxes[static_cast<size_t>(job.file)],
-                                      config, sim_options);
+                                      ConfigOf(f, config), sim_options);
     const std::string& problem = g.problem;
     std::vector<CableRelaxation>& done = g.cables;
     if (!g.network.is_null()) {
@@ -261,12 +278,12 @@ int RunRelax(const RelaxArgs& a) {
     try {
       bar.Update(2 * n + i, 0.1, f.stem + ": write JSON, STEP");
       auto t0 = Clock::now();
-      json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, config));
+      json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, ConfigOf(f, config)));
       f.times.json = Since(t0);
       t0 = Clock::now();
       {
         std::lock_guard lock(cad_mutex);
-        for (const std::string& problem : WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, config))
+        for (const std::string& problem : WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, ConfigOf(f, config)))
           fail(f, problem);
       }
       f.times.step = Since(t0);
@@ -277,8 +294,8 @@ int RunRelax(const RelaxArgs& a) {
         // Also under the CAD lock: a crash was once seen with OSMesa rendering while OCCT wrote
         // another file (not reproduced since); both spawn their own worker threads.
         std::lock_guard lock(cad_mutex);
-        WriteDeviationPicture((out / f.picture).string(), f, config);
-        if (a.close_ups) f.close_ups = WriteCloseUpPictures(out.string(), f, config);
+        WriteDeviationPicture((out / f.picture).string(), f, ConfigOf(f, config));
+        if (a.close_ups) f.close_ups = WriteCloseUpPictures(out.string(), f, ConfigOf(f, config));
         f.times.picture = Since(t0);
       }
       char buf[512];
@@ -326,7 +343,7 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   auto* cmd = app.add_subcommand(
       "relax", "Relax the cables of harness CAD or meshes under gravity from their drawn shape");
   cmd->add_option("INPUT", args->inputs,
-                  "STEP/IGES files, meshes (STL, OBJ, PLY, glTF...), or "
+                  "STEP/IGES files, KBL harness files, meshes (STL, OBJ, PLY, glTF...), or "
                   "folders of them")
       ->required();
   cmd->add_option("--out", args->out_dir,

@@ -70,6 +70,10 @@ FileKind SniffFileKind(const std::string& path) {
   if (IsBinaryStl(path, head)) return FileKind::kStl;
   if (text.rfind("solid", 0) == 0 && text.find("facet") != std::string::npos) return FileKind::kStl;
   if (!text.empty() && (text[0] == '{' || text[0] == '[')) return FileKind::kJson;
+  // The root tag follows the XML declaration and processing instructions within the first few
+  // hundred bytes (the VW samples: five lines of them).
+  if (!text.empty() && text[0] == '<' && text.find("KBL_container") != std::string::npos)
+    return FileKind::kKbl;
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);)
     if (line.rfind("v ", 0) == 0) return FileKind::kObj;
@@ -85,6 +89,7 @@ std::string DescribeFileKind(FileKind kind) {
     case FileKind::kPlyPoints: return "a PLY point cloud (no faces)";
     case FileKind::kStl: return "an STL mesh";
     case FileKind::kObj: return "an OBJ mesh";
+    case FileKind::kKbl: return "a KBL harness file";
     case FileKind::kUnknown: break;
   }
   return "";

@@ -36,6 +36,9 @@ TEST(FileKind, TheNameDoesNotDecide) {
   EXPECT_EQ(SniffFileKind(Write("a.txt", "\xEF\xBB\xBF  {\"cable\": 1}")), FileKind::kJson);
   EXPECT_EQ(SniffFileKind(Write("b.dat", "# blender\nv 0 0 0\nv 1 0 0\n")), FileKind::kObj);
   EXPECT_EQ(SniffFileKind(Write("c.csv", "s,x,y,z\n0,0,0,0\n")), FileKind::kUnknown);
+  EXPECT_EQ(SniffFileKind((testing::SourceDir() / "tests/data/kbl/kblxml_2.3sr-1_000971250_ltgs_getriebe_170718.kbl").string()),
+            FileKind::kKbl);
+  EXPECT_EQ(SniffFileKind(Write("d.xml", "<?xml version=\"1.0\"?>\n<other/>")), FileKind::kUnknown);
   EXPECT_EQ(SniffFileKind(Write("empty.step", "")), FileKind::kUnknown);
   EXPECT_EQ(SniffFileKind("/nonexistent/file.step"), FileKind::kUnknown);
   // A binary STL is recognised by its size: 80 header bytes, a count, 50 bytes per triangle.

@@ -51,6 +51,10 @@ struct CableConfig {
   std::optional<EndConfig> start, end;
   std::vector<ExtraSupportConfig> supports;
   std::optional<bool> auto_clips;  ///< add a clip where the route passes a solid (default on)
+  /// [m] the smallest bend radius the cable allows, when its data give one (a KBL file's wires);
+  /// unset -> HarnessConfig::min_bend_radius_factor diameters. Not read from harness.json.
+  std::optional<double> min_bend_radius;
+  std::string min_bend_radius_source;  ///< where min_bend_radius came from
 
   /// [m] the diameter a cable drawn with `drawn_diameter` (0: none) is relaxed with; 0 when
   /// neither the drawing nor harness.json gives one.
@@ -91,6 +95,10 @@ struct HarnessConfig {
   /// Why the cable `name` is a rigid part by `rigid` / `only`; empty when it is a cable.
   std::string RigidReason(const std::string& name) const;
 };
+
+/// `base` with every field that `top` sets replaced by top's (supports: when top has any). The
+/// layering of a cable's own harness.json entry over what an input file says about the cable.
+CableConfig Overlaid(CableConfig base, const CableConfig& top);
 
 /// Reads and validates harness.json. Throws FileError naming the file and field.
 HarnessConfig ReadHarnessConfig(const std::string& path);

@@ -51,6 +51,9 @@ struct CableSetup {
   std::vector<std::string>
       support_origin;    ///< per spec support: "start", "end", "harness.json", "clip <solid>"
   std::string junction;  ///< non-empty when an end meets 2+ other cables
+  /// [m] the cable's own smallest allowed bend radius (CableConfig::min_bend_radius); 0 = the
+  /// run's min_bend_radius_factor diameters.
+  double min_bend_radius_limit = 0.0;
   std::vector<std::string> notes;  ///< assumptions, one sentence each
 };
 
@@ -78,7 +81,7 @@ struct CableRelaxation {
   double min_bend_radius = 0.0;    ///< [m] (infinity when straight)
   double min_bend_radius_s = 0.0;  ///< [m]
   bool bend_flag = false;          ///< min bend radius < factor * diameter
-  double bend_limit = 0.0;         ///< [m] factor * diameter
+  double bend_limit = 0.0;         ///< [m] the set-up's min_bend_radius_limit, else factor * diameter
   double max_tension = 0.0;        ///< [N] largest axial force along the cable (pull > 0)
   double max_tension_s = 0.0;      ///< [m]
   /// The cable between two consecutive supports that hold its position (not sliding).

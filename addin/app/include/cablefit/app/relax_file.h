@@ -2,6 +2,8 @@
 // cables, and the per-input outputs <stem>.step and <stem>.json.
 #pragma once
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,9 +27,10 @@ double UnitInMetres(const std::string& name);
 /// sizes; else one line saying why not and which unit would make them plausible.
 std::string ImplausibleMeshUnit(const HarnessDrawing& drawing, double mesh_unit);
 
-/// Reads a CAD file (ReadCadFile) or a mesh (ReadMeshContents: tubes named "<stem>#k", junctions
-/// between tube ends closer than a quarter of the smaller diameter, other components kept as
-/// solids "<stem>-part<k>", a warning for implausible sizes). Throws FileError.
+/// Reads a CAD file (ReadCadFile), a KBL file (ReadKblInput's drawing: segments with their bundle
+/// diameters) or a mesh (ReadMeshContents: tubes named "<stem>#k", junctions between tube ends
+/// closer than a quarter of the smaller diameter, other components kept as solids
+/// "<stem>-part<k>", a warning for implausible sizes). Throws FileError.
 HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit);
 
 /// Per-stage wall times of one input [s].
@@ -48,7 +51,16 @@ struct RelaxedFile {
   std::string picture;                 ///< PNG file name next to the outputs, empty if none
   std::vector<std::string> close_ups;  ///< per cable PNG names (--close-ups), else empty
   std::vector<json::Json> networks;    ///< per network group: junction loads, contacts
+  /// The settings this input is relaxed with when the input itself carries some (a KBL file:
+  /// the run's harness.json layered over them); null = the run's. See ConfigOf.
+  std::shared_ptr<const HarnessConfig> own_config;
+  /// By cable name, what the input itself says about the cable (KBL: the "kbl" object).
+  std::map<std::string, json::Json> cable_json;
+  std::vector<std::string> notes;      ///< what reading the input found or assumed
 };
+
+/// The settings `f` is relaxed with: its own, else the run's `config`.
+const HarnessConfig& ConfigOf(const RelaxedFile& f, const HarnessConfig& config);
 
 /// The diameter `cable` is drawn with in the output: relaxed set-up's, else harness.json's or
 /// the drawn one, else the default.

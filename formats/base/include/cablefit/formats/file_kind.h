@@ -16,6 +16,7 @@ enum class FileKind {
   kPlyPoints,  // PLY without faces: a point cloud (a scan)
   kStl,        // ASCII "solid ..." or binary with the size its triangle count gives
   kObj,        // Wavefront OBJ vertex lines
+  kKbl,        // XML whose root element is a KBL_container (VDA 4964 harness description)
 };
 
 /// Reads at most the first few kilobytes of `path`; kUnknown when it cannot be read or matches

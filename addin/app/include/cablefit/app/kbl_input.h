@@ -1,0 +1,60 @@
+// A KBL harness file as an input of `cablefit relax`: the segments as drawn cables, and what the
+// file says about their physics as harness settings layered under the user's harness.json.
+// Mapping and assumptions: docs/kbl.md.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cablefit/app/harness_config.h"
+#include "cablefit/formats/harness_drawing.h"
+#include "cablefit/formats/json_util.h"
+#include "cablefit/formats/kbl_file.h"
+
+namespace cablefit::addin {
+
+/// Fraction of a round bundle's cross-section its wires fill. Round wires packed by hand or
+/// machine into a taped bundle fill about 70-80 % of the disc; mid value, an assumption.
+inline constexpr double kBundlePackingFraction = 0.75;
+
+/// A segment's bundle from its wires.
+struct KblBundle {
+  /// [m] one wire: its outside diameter; several: sqrt(sum d_i^2 / kBundlePackingFraction);
+  /// 0 when no wire gives an outside diameter.
+  double diameter = 0.0;
+  int wires_with_diameter = 0;
+  /// [kg/m] sum of the wires' mass per length; 0 unless every wire gives one.
+  double linear_density = 0.0;
+  /// [m] the largest of the wires' minimum bend radii (the tightest limit); 0 when none given.
+  double min_bend_radius = 0.0;
+};
+
+/// The bundle of the wires routed through a segment.
+KblBundle BundleOf(const std::vector<KblWire>& wires);
+
+/// [kg/m] the protections' mass per length averaged over their segment: each part's mass per
+/// length times the share of the segment it covers.
+double ProtectionMassPerLength(const std::vector<KblProtection>& protections);
+
+/// True for the extension ".kbl" (any case).
+bool IsKblPath(const std::string& path);
+/// True for a ".kbl" path, or a file of another extension (".xml") whose content is a KBL
+/// container (SniffFileKind).
+bool IsKblInput(const std::string& path);
+
+/// What `relax` reads from a KBL file.
+struct KblInput {
+  HarnessDrawing drawing;  ///< cables named by segment id, diameters = bundle diameters
+  /// The user's harness.json with one cable entry per segment: material from the bundle, the
+  /// wires' bend radius limit, fixings as clips; a segment's own harness.json entry overrides
+  /// them field by field (see docs/kbl.md).
+  HarnessConfig config;
+  std::map<std::string, json::Json> cable_json;  ///< by segment id: its "kbl" object of the JSON
+  std::vector<std::string> notes;                ///< the reader's findings and the defaults taken
+};
+
+/// Reads `path` (ReadKblFile) and builds the above. Throws FileError.
+KblInput ReadKblInput(const std::string& path, const HarnessConfig& user);
+
+}  // namespace cablefit::addin

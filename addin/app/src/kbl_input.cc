@@ -1,0 +1,200 @@
+#include "cablefit/app/kbl_input.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_file.h"
+#include "cablefit/formats/file_kind.h"
+
+namespace cablefit::addin {
+namespace {
+
+json::Json OptionalNumber(const std::optional<double>& v) {
+  return v ? json::Json(*v) : json::Json();
+}
+
+}  // namespace
+
+KblBundle BundleOf(const std::vector<KblWire>& wires) {
+  KblBundle b;
+  double sum_d2 = 0.0, largest = 0.0, mass = 0.0;
+  int with_mass = 0;
+  for (const KblWire& w : wires) {
+    if (w.outside_diameter && *w.outside_diameter > 0) {
+      sum_d2 += *w.outside_diameter * *w.outside_diameter;
+      largest = std::max(largest, *w.outside_diameter);
+      ++b.wires_with_diameter;
+    }
+    if (w.linear_density && *w.linear_density > 0) {
+      mass += *w.linear_density;
+      ++with_mass;
+    }
+    if (w.min_bend_radius) b.min_bend_radius = std::max(b.min_bend_radius, *w.min_bend_radius);
+  }
+  // One wire is its own bundle; several fill a disc at the packing fraction (always wider than
+  // the thickest of them, since the fraction is below 1).
+  if (b.wires_with_diameter == 1) b.diameter = largest;
+  if (b.wires_with_diameter > 1) b.diameter = std::sqrt(sum_d2 / kBundlePackingFraction);
+  if (!wires.empty() && with_mass == static_cast<int>(wires.size())) b.linear_density = mass;
+  return b;
+}
+
+double ProtectionMassPerLength(const std::vector<KblProtection>& protections) {
+  double sum = 0.0;
+  for (const KblProtection& p : protections)
+    if (p.linear_density) sum += *p.linear_density * (p.end - p.start);
+  return sum;
+}
+
+bool IsKblPath(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".kbl";
+}
+
+bool IsKblInput(const std::string& path) {
+  return IsKblPath(path) || (!IsCadPath(path) && SniffFileKind(path) == FileKind::kKbl);
+}
+
+KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
+  KblHarness h = ReadKblFile(path);
+  KblInput in;
+  in.notes = h.notes;
+  in.config = user;
+  int stiffness_estimated = 0;  // segments whose EI, GJ, EA come from the bundle diameter
+  for (size_t i = 0; i < h.segments.size(); ++i) {
+    const KblSegment& seg = h.segments[i];
+    DrawnCable& drawn = h.drawing.cables[i];
+    const KblBundle bundle = BundleOf(seg.wires);
+    const double area_diameter =
+        seg.cross_section_area ? std::sqrt(4.0 * *seg.cross_section_area / M_PI) : 0.0;
+    CableConfig cc;
+    std::vector<std::string> assumed;
+    std::string diameter_source;
+    if (bundle.diameter > 0) {
+      drawn.diameter = bundle.diameter;
+      diameter_source = bundle.wires_with_diameter == 1 ? "the wire's outside diameter"
+                                                        : "wires packed at 75 % of a disc";
+      // Stiffness from the bundle's diameter as for any drawn cable (assumed modulus), the mass
+      // from the wires' own data where every wire gives it.
+      MaterialSpec m = DefaultBundleMaterial(bundle.diameter);
+      std::string source = "KBL: bundle of " + std::to_string(seg.wires.size()) +
+                           " wire(s), stiffness estimated from its diameter (assumed E_eff 75 MPa)";
+      if (bundle.linear_density > 0) {
+        m.linear_density = bundle.linear_density;
+        source += ", mass from the wires";
+        // A rod has one material along its length: a protection's mass is spread over the
+        // whole segment (right in total, not in where it sits); its stiffness is not added.
+        const double protection = ProtectionMassPerLength(seg.protections);
+        if (protection > 0) {
+          m.linear_density += protection;
+          source += " and protections (spread over the segment)";
+          assumed.push_back(
+              "protection mass spread over the segment, protection stiffness not "
+              "modelled");
+        }
+      } else {
+        assumed.push_back("mass per length estimated from the diameter (not every wire gives one)");
+      }
+      cc.material = m;
+      cc.material_source = source;
+      ++stiffness_estimated;
+    } else if (area_diameter > 0) {
+      drawn.diameter = area_diameter;
+      diameter_source = "the segment's cross-section area (no wire diameter known)";
+      assumed.push_back("no wire data: default bundle material over the file's cross-section area");
+    } else {
+      diameter_source = "default";
+      assumed.push_back("no wire data and no cross-section area: default diameter and material");
+    }
+    if (bundle.min_bend_radius > 0) {
+      cc.min_bend_radius = bundle.min_bend_radius;
+      cc.min_bend_radius_source = "KBL: tightest Bend_radius of the segment's wires";
+    }
+    // Fixings hold the bundle where they sit: clips at their share of the drawn length.
+    const double length = drawn.centreline.s[drawn.centreline.size() - 1];
+    json::Json fixings = json::Json::array();
+    for (const KblFixing& f : seg.fixings) {
+      ExtraSupportConfig clip;
+      clip.kind = SupportKind::kClip;
+      clip.s = f.location * length;
+      cc.supports.push_back(clip);
+      fixings.push_back({{"id", f.id},
+                         {"name", f.name},
+                         {"type", f.type},
+                         {"location", f.location},
+                         {"s", *clip.s}});
+    }
+    const auto own = user.cables.find(seg.id);
+    in.config.cables[seg.id] = own == user.cables.end() ? cc : Overlaid(cc, own->second);
+    if (!assumed.empty()) {
+      std::string line = "segment " + seg.id + ": ";
+      for (size_t k = 0; k < assumed.size(); ++k) line += (k ? "; " : "") + assumed[k];
+      in.notes.push_back(line);
+    }
+
+    json::Json wires = json::Json::array();
+    for (const KblWire& w : seg.wires) {
+      wires.push_back({{"id", w.id},
+                       {"part", w.part},
+                       {"outside_diameter", OptionalNumber(w.outside_diameter)},
+                       {"conductor_area", OptionalNumber(w.conductor_area)},
+                       {"linear_density", OptionalNumber(w.linear_density)},
+                       {"min_bend_radius", OptionalNumber(w.min_bend_radius)}});
+    }
+    json::Json protections = json::Json::array();
+    for (const KblProtection& p : seg.protections) {
+      protections.push_back(
+          {{"id", p.id},
+           {"type", p.type},
+           {"start", p.start},
+           {"end", p.end},
+           {"linear_density", OptionalNumber(p.linear_density)},
+           {"mass_added", bundle.linear_density > 0 && p.linear_density.has_value()},
+           {"stiffness_added", false}});
+    }
+    auto end_json = [](const KblSegmentEnd& e) {
+      return json::Json{{"node", e.node},
+                        {"node_id", e.node_name},
+                        {"connectors", e.connectors},
+                        {"segments_at_node", e.segments_at_node}};
+    };
+    in.cable_json[seg.id] = json::Json(
+        {{"segment", seg.id},
+         {"id", seg.name},
+         {"start", end_json(seg.start)},
+         {"end", end_json(seg.end)},
+         {"virtual_length", OptionalNumber(seg.virtual_length)},
+         {"drawn_length", seg.drawn_length},
+         {"node_miss", seg.node_miss},
+         {"bundle_diameter", bundle.diameter > 0 ? json::Json(bundle.diameter) : json::Json()},
+         {"diameter", drawn.diameter > 0 ? json::Json(drawn.diameter) : json::Json()},
+         {"diameter_source", diameter_source},
+         {"cross_section_area", OptionalNumber(seg.cross_section_area)},
+         {"diameter_from_area", area_diameter > 0 ? json::Json(area_diameter) : json::Json()},
+         {"wires_linear_density",
+          bundle.linear_density > 0 ? json::Json(bundle.linear_density) : json::Json()},
+         {"wires_min_bend_radius",
+          bundle.min_bend_radius > 0 ? json::Json(bundle.min_bend_radius) : json::Json()},
+         {"wires", wires},
+         {"fixings", fixings},
+         {"protections", protections},
+         {"assumed", assumed}});
+  }
+  // Said once, not per segment: every bundle's stiffness is this estimate (the JSON's material
+  // source says it per cable).
+  if (stiffness_estimated > 0) {
+    in.notes.push_back(std::to_string(stiffness_estimated) + " of " +
+                       std::to_string(h.segments.size()) +
+                       " segments: stiffness estimated from the bundle diameter (PVC-copper "
+                       "bundle, E_eff 75 MPa assumed); diameter from the wires packed at 75 %");
+  }
+  in.drawing = std::move(h.drawing);
+  return in;
+}
+
+}  // namespace cablefit::addin

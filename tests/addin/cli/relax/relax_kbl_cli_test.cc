@@ -1,0 +1,104 @@
+// `cablefit relax` on KBL harness files end to end: the VW samples relaxed as rod networks with
+// the file's ids kept, harness.json layered over the file's data, a broken file in a batch.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "cablefit/formats/json_util.h"
+#include "cli_runner.h"
+#include "relax_test_util.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+namespace fs = std::filesystem;
+using json::Json;
+using testing::CableNamed;
+using testing::Q;
+using testing::RunCablefit;
+
+fs::path Kbl(const std::string& name) { return testing::SourceDir() / "tests/data/kbl" / name; }
+const char* kGenerator = "kblxml_2.3sr-1_000971230_ltgs_generator_170718";
+const char* kMovo = "kblxml_2.3sr-1_000971619_ltgs_movo_170718";
+const char* kGearbox = "kblxml_2.3sr-1_000971250_ltgs_getriebe_170718";
+
+TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
+  const fs::path out = testing::FreshTempDir("relax_kbl");
+  const fs::path config = out.parent_path() / "relax_kbl_harness.json";
+  // The user's entry for one segment wins over what the file says about it.
+  std::ofstream(config) << R"({"format": "cablefit-harness/1",
+                               "cables": {"Segment_3": {"diameter": 0.012}}})";
+  const auto run = RunCablefit("relax " + Q(Kbl(std::string(kGenerator) + ".kbl")) + " " +
+                               Q(Kbl(std::string(kMovo) + ".kbl")) + " --out " + Q(out) +
+                               " --config " + Q(config));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  std::printf("%s", run.out.c_str());  // per-segment lines and stage times
+  for (const std::string stem : {kGenerator, kMovo}) {
+    for (const char* suffix : {".step", ".json", "-deviation.png"})
+      EXPECT_TRUE(fs::exists(out / (stem + suffix))) << stem << suffix;
+  }
+  ASSERT_TRUE(fs::exists(out / "report.html"));
+  EXPECT_NE(testing::ReadTextFile(out / "report.html").find("the cable's own limit"),
+            std::string::npos);
+
+  const Json movo = json::ReadJsonFile((out / (std::string(kMovo) + ".json")).string());
+  std::set<std::string> names;
+  for (const Json& c : movo.at("cables")) {
+    names.insert(c.at("name").get<std::string>());
+    EXPECT_FALSE(c.contains("error")) << c.at("name") << ": " << c.value("error", "");
+    ASSERT_TRUE(c.contains("kbl")) << c.at("name");
+    EXPECT_EQ(c.at("kbl").at("segment"), c.at("name"));
+  }
+  EXPECT_EQ(names.size(), 30u);
+  for (int k = 1; k <= 30; ++k) EXPECT_TRUE(names.count("Segment_" + std::to_string(k))) << k;
+  EXPECT_FALSE(movo.at("networks").empty());
+
+  const Json gen = json::ReadJsonFile((out / (std::string(kGenerator) + ".json")).string());
+  ASSERT_EQ(gen.at("cables").size(), 3u);
+  const Json& s1 = CableNamed(gen, "Segment_1");
+  // The fixing at 0.886766 of the segment is a clip there.
+  bool clip = false;
+  for (const Json& sp : s1.at("supports")) {
+    if (sp.at("kind") == "clip") {
+      clip = true;
+      EXPECT_NEAR(sp.at("s").get<double>(), 0.886766 * s1.at("drawn_length").get<double>(), 1e-6);
+    }
+  }
+  EXPECT_TRUE(clip);
+  // The bend limit is the 5.1 mm wire's Bend_radius (15.3 mm), not 5 bundle diameters.
+  EXPECT_NEAR(s1.at("min_bend_radius").at("limit").get<double>(), 0.0153, 1e-12);
+  // Bundle of 1.6, 1.6 and 5.1 mm wires at 75 %: sqrt((1.6^2 + 1.6^2 + 5.1^2) / 0.75) mm.
+  const double bundle = 1e-3 * std::sqrt((1.6 * 1.6 * 2 + 5.1 * 5.1) / 0.75);
+  EXPECT_NEAR(s1.at("diameter").get<double>(), bundle, 1e-9);
+  EXPECT_NEAR(s1.at("kbl").at("bundle_diameter").get<double>(), bundle, 1e-9);
+  // Mass per length from the wires, 6 + 6 + 68 g/m, plus the PET tape (6 g/m) over
+  // 1 - 0.045496 of the segment, spread.
+  EXPECT_NEAR(s1.at("material").at("linear_density").get<double>(), 0.080 + 0.006 * (1 - 0.045496),
+              1e-12);
+  EXPECT_EQ(s1.at("kbl").at("protections").at(0).at("mass_added"), true);
+  EXPECT_NEAR(CableNamed(gen, "Segment_3").at("diameter").get<double>(), 0.012, 1e-12);
+}
+
+TEST(RelaxKblCli, ABrokenKblFileFailsAloneAndTheBatchGoesOn) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_bad");
+  // (The gearbox cable is drawn with a 20.4 mm bend against its wire's 29.4 mm Bend_radius.)
+  const fs::path bad = out.parent_path() / "relax_kbl_bad_input.kbl";
+  std::ofstream(bad) << "<kbl:KBL_container xmlns:kbl=\"http://www.prostep.org/Car_electric_"
+                        "container/KBL2.3/KBLSchema\"><Segment id=\"S1\"><Start_node>N9"
+                        "</Start_node></Segment>";  // unclosed root
+  const auto run = RunCablefit("relax " + Q(bad) + " " + Q(Kbl(std::string(kGearbox) + ".kbl")) +
+                               " --out " + Q(out));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("cablefit: " + bad.string() + ": not XML"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::exists(out / (std::string(kGearbox) + ".json")));
+  EXPECT_TRUE(fs::exists(out / (std::string(kGearbox) + ".step")));
+  EXPECT_NE(run.out.find("Segment_1: L=0.625 m"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(TOO TIGHT: the cable's limit 29.4 mm, at s="), std::string::npos)
+      << run.out;
+}
+
+}  // namespace
+}  // namespace cablefit
