@@ -64,13 +64,14 @@ std::vector<double> ClampTwist(const BranchSpec& br, const std::vector<double>& 
 
 }  // namespace
 
-std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net) {
+std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
+                                         const std::vector<Polyline>* routes) {
   const RodModel& m = net.rod;
   std::vector<Eigen::Vector4d> q(m.items.size(), Eigen::Vector4d(1, 0, 0, 0));
   for (size_t b = 0; b < net.branches.size(); ++b) {
     const BranchSpec& br = net.spec.branches[b];
     const internal::BranchLayout& lay = net.branches[b];
-    const Polyline route = ReparameteriseToLength(br.route, br.length);
+    const Polyline route = ReparameteriseToLength(routes ? (*routes)[b] : br.route, br.length);
     const size_t ne = lay.elements.size();
     std::vector<Vec3> t(ne), d1(ne);
     std::vector<double> mid_s(ne);

@@ -17,6 +17,9 @@ RodSpec BranchRodSpec(const NetworkSpec& spec, int branch);
 /// Frame (w, x, y, z) of every item of the compiled network in its drawn shape: element
 /// tangents along the route's chords, twist-free (parallel transport) along each branch; a
 /// support frame takes its neighbouring element's frame, a junction its first branch's end frame.
-std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net);
+/// `routes` (one per branch, as long as the branch) replace the drawn routes when given: the
+/// start of a finer level from the coarser level's equilibrium.
+std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
+                                         const std::vector<Polyline>* routes = nullptr);
 
 }  // namespace cablefit

@@ -362,10 +362,10 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
 
 }  // namespace
 
-RodState DrawnNetworkState(const NetworkModel& net) {
+RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes) {
   const RodModel& m = net.rod;
   RodState st;
-  st.q = DrawnFrames(net);
+  st.q = DrawnFrames(net, routes);
   internal::AlignQuaternionSigns(m, &st);
   const int ns = static_cast<int>(m.supports.size());
   st.support_position.assign(ns, Vec3::Zero());
@@ -411,7 +411,8 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   const NetworkModel base = CompileNetworkModel(spec, options.element_length, options.refinement);
   const NodeInfo info = NodeTable(base);
   const ObstacleField field(spec.obstacles);
-  RodState st = DrawnNetworkState(base);
+  const bool warm = options.initial_routes.size() == spec.branches.size();
+  RodState st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr);
   std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;

@@ -25,6 +25,16 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
   std::vector<Eigen::Triplet<double>> triplets;
   const Eigen::Matrix3Xd r = state.NodePositions(model);
   const Eigen::Matrix3d e3x = quat::Skew(Vec3::UnitZ());
+  // d r_node / d theta_item of one element, shared by every support whose path crosses it (a
+  // network has a support at every end, each path crossing most of the tree).
+  std::vector<Eigen::Matrix3d> element_dr;
+  if (jacobian) {
+    element_dr.resize(static_cast<size_t>(model.num_elements));
+    for (int j = 0; j < model.num_elements; ++j) {
+      element_dr[static_cast<size_t>(j)] =
+          model.element_length[j] * quat::ToMatrix(state.q[model.element_item[j]]) * e3x;
+    }
+  }
   for (size_t k = 0; k < model.supports.size(); ++k) {
     const RodSupport& sp = model.supports[k];
     if (sp.constraint_row < 0) continue;
@@ -40,9 +50,9 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
     if (!jacobian) continue;
     model.ForEachPathElementFrom(from, sp.node, [&](int j, int sign) {
       const int item = model.element_item[j];
-      const Eigen::Matrix3d dr = (-sign * model.element_length[j]) * quat::ToMatrix(state.q[item]) * e3x;
+      const Eigen::Matrix3d& dr = element_dr[static_cast<size_t>(j)];
       for (int row = 0; row < sp.constraint_rows; ++row) {
-        const Eigen::RowVector3d v = p.row(row) * dr;
+        const Eigen::RowVector3d v = -sign * (p.row(row) * dr);
         for (int d = 0; d < 3; ++d) triplets.emplace_back(sp.constraint_row + row, 3 * item + d, v[d]);
       }
     });

@@ -6,6 +6,9 @@
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
@@ -70,6 +73,15 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
                       const std::vector<RelaxedCable>& cables, std::vector<std::string>* skipped) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
   int shapes = 0;
+  // The spines of every cable first, then all sweeps in one helper process, then the document
+  // in the order of `cables`.
+  struct Pending {
+    const DrawnCable* drawn = nullptr;
+    std::vector<std::size_t> spines;  // indices into `spines`; two for a closed loop
+    std::string problem;              // why it cannot be written, when it cannot
+  };
+  std::vector<Pending> pending;
+  std::vector<std::pair<TopoDS_Wire, double>> spines;  // [mm]
   for (const RelaxedCable& relaxed : cables) {
     if (relaxed.source_cable < 0 || relaxed.source_cable >= static_cast<int>(input.cables.size())) {
       throw InvalidInput("relaxed cable refers to input cable " +
@@ -81,6 +93,8 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
     if (!(diameter > 0)) {
       throw InvalidInput("cable '" + drawn.name + "': no diameter (drawn as a curve; set one)");
     }
+    Pending p;
+    p.drawn = &drawn;
     try {
       if (relaxed.centreline.size() < 2 || !relaxed.centreline.points.allFinite()) {
         throw InvalidInput("the relaxed centreline needs at least 2 finite points");
@@ -97,35 +111,54 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       const Eigen::Matrix3Xd points = FillLongGaps(distinct) / kMetresPerOcctUnit;  // 3 x m [mm]
       // Approximation tolerance well below the 1 %-of-diameter accuracy promised for read-back.
       const double tolerance = std::min(0.01, 1e-3 * diameter / kMetresPerOcctUnit);  // [mm]
-      const auto sweep = [&](const Eigen::Matrix3Xd& along) {
-        const TopoDS_Wire spine = BRepBuilderAPI_MakeWire(MakeSplineEdge(along, tolerance)).Wire();
-        return MakeTubeSolidInChild(spine, diameter / kMetresPerOcctUnit);
+      std::vector<std::pair<TopoDS_Wire, double>> mine;
+      const auto add = [&](const Eigen::Matrix3Xd& along) {
+        mine.emplace_back(BRepBuilderAPI_MakeWire(MakeSplineEdge(along, tolerance)).Wire(),
+                          diameter / kMetresPerOcctUnit);
       };
-      TopoDS_Shape tube;
       const Eigen::Index m = points.cols();
       if (m >= 4 && (points.col(m - 1) - points.col(0)).norm() < diameter / kMetresPerOcctUnit) {
         // A closed loop: a spline through coinciding ends cannot be swept, two halves can.
-        TopoDS_Compound halves;
-        BRep_Builder builder;
-        builder.MakeCompound(halves);
-        builder.Add(halves, sweep(points.leftCols(m / 2 + 1)));
-        builder.Add(halves, sweep(points.rightCols(m - m / 2)));
-        tube = halves;
+        add(points.leftCols(m / 2 + 1));
+        add(points.rightCols(m - m / 2));
       } else {
-        tube = sweep(points);
+        add(points);
       }
-      AddNamedShape(doc, tube, drawn.name,
-                    drawn.has_color ? std::optional<SrgbColor>(drawn.color) : std::nullopt);
-      ++shapes;
+      for (auto& spine : mine) {
+        p.spines.push_back(spines.size());
+        spines.push_back(std::move(spine));
+      }
     } catch (const InvalidInput& e) {
-      const std::string problem = "cable '" + drawn.name + "': " + e.what();
-      if (skipped == nullptr) throw InvalidInput(problem);
-      skipped->push_back(problem);
+      p.problem = e.what();
     } catch (const Standard_Failure& e) {
-      const std::string problem = "cable '" + drawn.name + "': " + e.GetMessageString();
+      p.problem = e.GetMessageString();
+    }
+    pending.push_back(std::move(p));
+  }
+  const std::vector<TubeSweepResult> tubes = MakeTubeSolidsInChild(spines);
+  for (const Pending& p : pending) {
+    std::string problem = p.problem;
+    for (const std::size_t k : p.spines)
+      if (problem.empty() && tubes[k].tube.IsNull()) problem = tubes[k].error;
+    if (!problem.empty()) {
+      problem = "cable '" + p.drawn->name + "': " + problem;
       if (skipped == nullptr) throw InvalidInput(problem);
       skipped->push_back(problem);
+      continue;
     }
+    TopoDS_Shape tube;
+    if (p.spines.size() == 1) {
+      tube = tubes[p.spines.front()].tube;
+    } else {
+      TopoDS_Compound halves;
+      BRep_Builder builder;
+      builder.MakeCompound(halves);
+      for (const std::size_t k : p.spines) builder.Add(halves, tubes[k].tube);
+      tube = halves;
+    }
+    AddNamedShape(doc, tube, p.drawn->name,
+                  p.drawn->has_color ? std::optional<SrgbColor>(p.drawn->color) : std::nullopt);
+    ++shapes;
   }
   for (const DrawnSolid& solid : input.solids) {
     if (!solid.shape) continue;  // not from CAD (e.g. a mesh input): nothing to copy

@@ -2,6 +2,7 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <Standard_Failure.hxx>
 #include <TopoDS.hxx>
 #include <unistd.h>
 
@@ -76,6 +77,111 @@ int SweepTubeInHelper(int spine_fd, double diameter, int tube_fd) {
     std::ofstream(tube_path, std::ios::trunc) << e.what();
     return kTubeSweepFailedExit;
   }
+}
+
+namespace {
+
+// One batch file: per item a header line, then (for a shape) its BRep text of the stated size.
+//   spines: "SPINE <diameter> <bytes>\n<brep>"
+//   tubes:  "TUBE <bytes>\n<brep>" or "ERROR <message without newlines>\n"
+std::string ShapeText(const TopoDS_Shape& shape) {
+  std::ostringstream out;
+  BRepTools::Write(shape, out);
+  return out.str();
+}
+
+bool ReadShapeText(std::istream& in, std::size_t bytes, TopoDS_Shape* shape) {
+  std::string text(bytes, '\0');
+  if (!in.read(text.data(), static_cast<std::streamsize>(bytes))) return false;
+  std::istringstream shape_in(text);
+  BRep_Builder builder;
+  BRepTools::Read(*shape, shape_in, builder);
+  return !shape->IsNull();
+}
+
+std::string SingleLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+std::vector<TubeSweepResult> SweepEachInItsOwnChild(
+    const std::vector<std::pair<TopoDS_Wire, double>>& spines, double max_seconds) {
+  std::vector<TubeSweepResult> results(spines.size());
+  for (std::size_t i = 0; i < spines.size(); ++i) {
+    try {
+      results[i].tube = MakeTubeSolidInChild(spines[i].first, spines[i].second, max_seconds);
+    } catch (const InvalidInput& e) {
+      results[i].error = e.what();
+    }
+  }
+  return results;
+}
+
+}  // namespace
+
+std::vector<TubeSweepResult> MakeTubeSolidsInChild(
+    const std::vector<std::pair<TopoDS_Wire, double>>& spines, double max_seconds) {
+  if (spines.size() <= 1) return SweepEachInItsOwnChild(spines, max_seconds);
+  const MemoryFile spines_file("cablefit-spines");
+  const MemoryFile tubes_file("cablefit-tubes");
+  if (!spines_file.ok() || !tubes_file.ok()) return SweepEachInItsOwnChild(spines, max_seconds);
+  {
+    std::ofstream out(spines_file.path(), std::ios::binary | std::ios::trunc);
+    for (const auto& [spine, diameter] : spines) {
+      const std::string text = ShapeText(spine);
+      char header[96];
+      std::snprintf(header, sizeof header, "SPINE %.17g %zu\n", diameter, text.size());
+      out << header << text;
+    }
+    if (!out.flush()) return SweepEachInItsOwnChild(spines, max_seconds);
+  }
+  const auto outcome = RunOcctChild({"sweeps", "3", "4"}, max_seconds,
+                                    {{spines_file.fd(), 3}, {tubes_file.fd(), 4}});
+  if (!outcome || outcome->timed_out || outcome->signal != 0 || outcome->exit_code != 0) {
+    // No helper (then each sweeps in this process), or the batch died on one of the spines.
+    return SweepEachInItsOwnChild(spines, max_seconds);
+  }
+  std::vector<TubeSweepResult> results(spines.size());
+  std::ifstream in(tubes_file.path(), std::ios::binary);
+  for (TubeSweepResult& r : results) {
+    std::string kind;
+    if (!(in >> kind)) return SweepEachInItsOwnChild(spines, max_seconds);
+    if (kind == "ERROR") {
+      in.get();  // the space
+      std::getline(in, r.error);
+      continue;
+    }
+    std::size_t bytes = 0;
+    if (kind != "TUBE" || !(in >> bytes) || in.get() != '\n' || !ReadShapeText(in, bytes, &r.tube))
+      return SweepEachInItsOwnChild(spines, max_seconds);
+  }
+  return results;
+}
+
+int SweepTubesInHelper(int spines_fd, int tubes_fd) {
+  std::ifstream in("/proc/self/fd/" + std::to_string(spines_fd), std::ios::binary);
+  std::ofstream out("/proc/self/fd/" + std::to_string(tubes_fd), std::ios::binary | std::ios::trunc);
+  if (!in || !out) return 4;
+  std::string kind;
+  while (in >> kind) {
+    double diameter = 0;
+    std::size_t bytes = 0;
+    TopoDS_Shape spine;
+    if (kind != "SPINE" || !(in >> diameter >> bytes) || in.get() != '\n' ||
+        !ReadShapeText(in, bytes, &spine) || spine.ShapeType() != TopAbs_WIRE) {
+      return 4;
+    }
+    try {
+      const std::string text = ShapeText(MakeTubeSolid(TopoDS::Wire(spine), diameter));
+      out << "TUBE " << text.size() << "\n" << text;
+    } catch (const InvalidInput& e) {
+      out << "ERROR " << SingleLine(e.what()) << "\n";
+    } catch (const Standard_Failure& e) {
+      out << "ERROR " << SingleLine(e.GetMessageString()) << "\n";
+    }
+  }
+  return out.flush() ? 0 : 4;
 }
 
 }  // namespace cablefit

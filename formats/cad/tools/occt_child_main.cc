@@ -5,6 +5,8 @@
 //       read in cablefit reports the problem), non-zero or a signal only when OCCT crashed
 //   cablefit-occt-child PARENT_PID sweep SPINE_FD DIAMETER TUBE_FD
 //       sweeps the tube of SweepTubeInHelper
+//   cablefit-occt-child PARENT_PID sweeps SPINES_FD TUBES_FD
+//       sweeps every tube of a batch (SweepTubesInHelper)
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -37,6 +39,9 @@ int Run(int argc, char** argv) {
       // An exception is a clean failure that cablefit's own read will report with its message.
     }
     return 0;
+  }
+  if (mode == "sweeps" && argc == 5) {
+    return cablefit::SweepTubesInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
   }
   if (mode == "sweep" && argc == 6) {
     return cablefit::SweepTubeInHelper(std::atoi(argv[3]), Number(argv[4]), std::atoi(argv[5]));

@@ -65,7 +65,7 @@ TEST(Usage, AFileForAnotherCommandSaysWhereItBelongs) {
 
   auto diagnose = RunCablefit("diagnose " + step + " --out " + Q(out / "d"));
   EXPECT_EQ(diagnose.exit_code, 2);
-  EXPECT_TRUE(Has(diagnose.err, "it is a STEP file; CAD files and meshes go to 'cablefit relax'"))
+  EXPECT_TRUE(Has(diagnose.err, "it is a STEP file; CAD, KBL files and meshes go to 'cablefit relax'"))
       << diagnose.err;
 
   auto relax = RunCablefit("relax " + Q(src / (case_dir + "scan.ply")) + " " +

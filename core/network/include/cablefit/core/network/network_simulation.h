@@ -27,6 +27,10 @@ struct NetworkOptions {
   /// falling onto it.
   double contact_gap = 0.002;
   int max_contact_rounds = 100;  // each round is a warm solve of a few Newton iterations
+  /// Where the solve starts: empty = the drawing; else one centreline per branch (a coarser
+  /// level's equilibrium), whose tangents set the first frames. The model (junction angles,
+  /// support targets) always comes from the drawing.
+  std::vector<Polyline> initial_routes;
 
   bool IsValid(std::string* why) const;
 };
@@ -71,6 +75,6 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
 
 /// The drawn shape of a compiled network as a solver state (supports start at the poses the
 /// drawing gives them; the solver moves them to their targets).
-RodState DrawnNetworkState(const NetworkModel& net);
+RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes = nullptr);
 
 }  // namespace cablefit
