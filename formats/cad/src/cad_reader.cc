@@ -21,6 +21,7 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
+#include <map>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +32,7 @@
 #include "cad_shape_handle.h"
 #include "cad_read_in_process.h"
 #include "crash_probe.h"
+#include "drawn_sweeps.h"
 #include "curve_routes.h"
 #include "occt_session.h"
 #include "tube_recovery.h"
@@ -147,11 +149,12 @@ bool IsPlaceholderName(const std::string& name) {
 class DrawingBuilder {
  public:
   DrawingBuilder(Handle(TDocStd_Document) doc, const CadReadOptions& options,
-                 HarnessDrawing* drawing)
+                 HarnessDrawing* drawing, std::vector<internal::DrawnTube>* tubes)
       : doc_(std::move(doc)),
         shapes_(XCAFDoc_DocumentTool::ShapeTool(doc_->Main())),
         options_(options),
-        drawing_(drawing) {}
+        drawing_(drawing),
+        tubes_(tubes) {}
 
   void WalkFreeShapes() {
     TDF_LabelSequence roots;
@@ -267,10 +270,15 @@ class DrawingBuilder {
     for (const TopoDS_Shape& body : bodies) {
       const Style body_style = bodies.size() > 1 ? SubStyle(label, body, style) : style;
       std::optional<RecoveredTube> tube = RecoverTube(body, tube_options);
+      internal::DrawnTube record;
       if (tube) {
+        record.centres = tube->centres * kMetresPerOcctUnit;
+        record.radius = tube->radius * kMetresPerOcctUnit;
+        record.inner_radius = tube->inner_radius * kMetresPerOcctUnit;
         const double length = ChainLength(tube->centres);
         const double slenderness = length / (2 * tube->radius);
         if (slenderness < options_.min_tube_aspect) {
+          record.skipped_note = static_cast<int>(drawing_->skipped.size());
           char line[200];
           std::snprintf(line, sizeof line,
                         "a tube %.1f diameters long (%.4g mm across), less than the %.4g of a "
@@ -291,6 +299,9 @@ class DrawingBuilder {
         cable.source = CableSourceKind::kTube;
         cable.fit_error = tube->rms_residual * kMetresPerOcctUnit;
         SetColor(&cable, body_style.color);
+        record.is_cable = true;
+        record.index = static_cast<int>(drawing_->cables.size() + cables.size());
+        tubes_->push_back(std::move(record));
         cables.push_back(std::move(cable));
       } else {
         DrawnSolid solid;
@@ -301,6 +312,10 @@ class DrawingBuilder {
         }
         solid.mesh = Tessellate(body, options_.mesh_relative_deflection);
         solid.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
+        if (record.centres.cols() > 0) {
+          record.index = static_cast<int>(drawing_->solids.size());
+          tubes_->push_back(std::move(record));
+        }
         drawing_->solids.push_back(std::move(solid));
       }
     }
@@ -316,6 +331,7 @@ class DrawingBuilder {
   Handle(XCAFDoc_ShapeTool) shapes_;
   const CadReadOptions& options_;
   HarnessDrawing* drawing_;
+  std::vector<internal::DrawnTube>* tubes_;  // every tube recovered, cable or solid part
 };
 
 // Distance from `p` to the segment a-b.
@@ -370,6 +386,19 @@ void DemoteDucts(HarnessDrawing* drawing, double relative_deflection) {
     drawing->solids.push_back(std::move(solid));
   }
   cables = std::move(kept);
+}
+
+// A part instanced many times (the profile sketch of every wire) would say the same thing once
+// per instance: once, with the count.
+void CollapseRepeatedLines(std::vector<std::string>* lines) {
+  std::vector<std::string> order;
+  std::map<std::string, int> count;
+  for (const std::string& line : *lines)
+    if (count[line]++ == 0) order.push_back(line);
+  for (std::string& line : order) {
+    if (const int n = count[line]; n > 1) line += " (" + std::to_string(n) + " times)";
+  }
+  *lines = std::move(order);
 }
 
 std::string StepLengthUnit(STEPCAFControl_Reader& reader) {
@@ -458,13 +487,16 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
   drawing.source_path = path;
   try {
     Handle(TDocStd_Document) doc = ReadDocument(path, iges, &drawing.length_unit);
-    DrawingBuilder builder(doc, options, &drawing);
+    std::vector<DrawnTube> tubes;
+    DrawingBuilder builder(doc, options, &drawing, &tubes);
     builder.WalkFreeShapes();
+    MergeSweepsIntoCurves(tubes, &drawing);
   } catch (const Standard_Failure& e) {
     throw FileError(path, std::string("OCCT could not read the file: ") + e.GetMessageString());
   }
   DemoteDucts(&drawing, options.mesh_relative_deflection);
   NameCablesUniquely(&drawing);
+  CollapseRepeatedLines(&drawing.skipped);
   if (drawing.cables.empty() && drawing.solids.empty()) {
     throw FileError(path, "the file contains no shapes");
   }

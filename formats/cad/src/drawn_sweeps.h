@@ -1,0 +1,31 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "cablefit/formats/harness_drawing.h"
+
+namespace cablefit::internal {
+
+/// A tube recovered from a solid while reading, whether it became a cable or stayed a solid
+/// part (too short to be a cable on its own).
+struct DrawnTube {
+  bool is_cable = false;     ///< index is into HarnessDrawing::cables, else into ::solids
+  int index = 0;
+  int skipped_note = -1;     ///< the HarnessDrawing::skipped line that said why it is a solid
+  Eigen::Matrix3Xd centres;  ///< 3 x n [m], along the tube
+  double radius = 0.0;       ///< [m] outer
+  double inner_radius = 0.0; ///< [m] bore, 0 for a solid tube
+};
+
+/// CAD tools that draw a cable as a route curve plus the solid swept along it (conductor,
+/// insulation, sheath) leave the same cable twice: a curve without diameter and a tube around
+/// it, which would otherwise be a second cable or an obstacle the curve lies inside. A tube
+/// whose every centre lies on a bare curve is taken as that curve's body: the curve gets its
+/// diameter (and colour when it has none) and the tube leaves the drawing, with a line in
+/// `skipped` saying so. A hollow tube counts as body only when it sits on a matched core or
+/// covers most of the curve (a hose); a short hollow tube alone is a duct or grommet and stays.
+void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing);
+
+}  // namespace cablefit::internal
