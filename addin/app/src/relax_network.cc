@@ -254,6 +254,13 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
     for (size_t b = 0; b < out.cables.size(); ++b)
       if (touching[b]) out.cables[b].setup.notes.push_back(note);
   }
+  for (int k : fine.attached_obstacles) {
+    const std::string note = "solid '" + drawing.solids[group.obstacles[k]].name +
+                             "': the drawing runs the cable into it, so it is taken as the part "
+                             "the cable is fitted to there (a flange, a connector), not as a "
+                             "surface it can rest on";
+    for (CableRelaxation& r : out.cables) r.setup.notes.push_back(note);
+  }
   if (!sim.refinement_failure.empty()) {
     const std::string note = "a finer discretisation than the " +
                              std::to_string(sim.level_elements.back()) +

@@ -360,6 +360,36 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
   }
 }
 
+// Per obstacle: does the drawn cable go into it deeper than kAttachedDepth of its radius within
+// kAttachedReach radii (along the cable) of a support that holds it? That is a cable fitted
+// into a part at its held end. Deeper overlap away from supports is a drawing that ignored the
+// cable's radius: it stays a contact surface and the cable is pushed out onto it.
+constexpr double kAttachedDepth = 0.25;
+constexpr double kAttachedReach = 4.0;
+std::vector<char> EnteredInDrawing(const NetworkModel& net, const NodeInfo& info,
+                                   const std::vector<ObstacleSpec>& obstacles) {
+  std::vector<char> entered(obstacles.size(), 0);
+  if (obstacles.empty()) return entered;
+  const Eigen::Matrix3Xd r = DrawnNetworkState(net, nullptr).NodePositions(net.rod);  // 3 x n [m]
+  std::vector<char> near_support(net.rod.num_nodes(), 0);
+  for (int n = 0; n < net.rod.num_nodes(); ++n) {
+    for (const RodSupport& sp : net.rod.supports) {
+      if (sp.sliding || sp.contact || info.branch[n] != info.branch[sp.node]) continue;
+      if (std::abs(info.s[n] - info.s[sp.node]) <= kAttachedReach * info.radius[n]) near_support[n] = 1;
+    }
+  }
+  for (size_t k = 0; k < obstacles.size(); ++k) {
+    const ObstacleField one({obstacles[k]});
+    for (int n = 0; n < net.rod.num_nodes() && !entered[k]; ++n) {
+      const double radius = info.radius[n];
+      if (radius <= 0 || !near_support[n]) continue;
+      const ObstacleHit hit = one.Nearest(r.col(n), radius);
+      entered[k] = hit.obstacle >= 0 && radius - hit.distance > kAttachedDepth * radius;
+    }
+  }
+  return entered;
+}
+
 }  // namespace
 
 RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes) {
@@ -410,12 +440,15 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   }
   const NetworkModel base = CompileNetworkModel(spec, options.element_length, options.refinement);
   const NodeInfo info = NodeTable(base);
-  const ObstacleField field(spec.obstacles);
+  const std::vector<char> attached = EnteredInDrawing(base, info, spec.obstacles);
+  const ObstacleField field(spec.obstacles, attached);
   const bool warm = options.initial_routes.size() == spec.branches.size();
   RodState st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr);
   std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;
+  for (size_t k = 0; k < attached.size(); ++k)
+    if (attached[k]) sol.attached_obstacles.push_back(static_cast<int>(k));
   int iterations = 0, streak = 0, extra_release = 0, widest = 1 << 20;
   for (int round = 0; round < options.max_contact_rounds; ++round) {
     net = WithHolds(base, holds, info);

@@ -40,8 +40,10 @@ struct ObstacleField::Best {
   Vec3 point = Vec3::Zero();
 };
 
-ObstacleField::ObstacleField(const std::vector<ObstacleSpec>& obstacles) {
+ObstacleField::ObstacleField(const std::vector<ObstacleSpec>& obstacles,
+                             const std::vector<char>& ignored) {
   for (size_t k = 0; k < obstacles.size(); ++k) {
+    if (k < ignored.size() && ignored[k]) continue;
     const TriangleMesh& m = obstacles[k].mesh;
     for (int f = 0; f < m.faces.cols(); ++f) {
       Triangle t;

@@ -20,7 +20,10 @@ struct ObstacleHit {
 
 class ObstacleField {
  public:
-  explicit ObstacleField(const std::vector<ObstacleSpec>& obstacles);
+  /// `ignored` (empty, or one flag per obstacle) leaves obstacles out while the others keep
+  /// their index in `obstacles`.
+  explicit ObstacleField(const std::vector<ObstacleSpec>& obstacles,
+                         const std::vector<char>& ignored = {});
   bool empty() const { return triangles_.empty(); }
   int num_triangles() const { return static_cast<int>(triangles_.size()); }
   /// The nearest surface point within `range` [m] of p (signed by the nearest face's side).

@@ -256,6 +256,31 @@ TEST(NetworkContact, DroopDrawnIntoAPanelIsPushedOutOntoIt) {
               sol.contact_rounds, sol.summary.iterations);
 }
 
+// A pipe drawn with its clamped end 15 mm inside a flange block (radius 10 mm): it is fitted
+// there. Pushing it out would fight the clamp (the KKT system was singular on OCCT's exhaust
+// model); the block is reported as attached and the pipe relaxes as if the block were not there.
+TEST(NetworkContact, ACableDrawnIntoAPartAtItsClampIsFittedThereNotPushedOut) {
+  const double length = 0.4, d = 0.02;
+  const MaterialSpec mat = TestMaterial(0.5, 0.5, d);
+  NetworkSpec spec;
+  BranchSpec b = Cable(length, mat, StraightRoute(Vec3::Zero(), Vec3(length, 0, 0)));
+  b.supports = {Clamp(0.0, Vec3::Zero(), Vec3::UnitX())};
+  spec.branches = {b};
+  NetworkOptions opt;
+  opt.element_length = 0.01;
+  const NetworkSolution free = SolveNetwork(spec, opt);
+  spec.obstacles.push_back({"flange", Box(Vec3(-0.05, -0.05, -0.05), Vec3(0.015, 0.05, 0.05))});
+  const NetworkSolution fitted = SolveNetwork(spec, opt);
+  ASSERT_TRUE(free.converged()) << free.summary.BriefReport();
+  ASSERT_TRUE(fitted.converged()) << fitted.summary.BriefReport();
+  EXPECT_EQ(fitted.attached_obstacles, std::vector<int>{0});
+  EXPECT_TRUE(fitted.contacts.empty());
+  EXPECT_LT((fitted.branches[0].points - free.branches[0].points).cwiseAbs().maxCoeff(), 1e-12);
+  // The same block 1 m along, where the drawing does not enter it, stays an obstacle.
+  spec.obstacles[0].mesh.vertices.row(0).array() += 1.0;
+  EXPECT_TRUE(SolveNetwork(spec, opt).attached_obstacles.empty());
+}
+
 // The same fall onto sheet metal half a millimetre thick: within one solve the free hanging
 // cable would pass right through it, so the crossing must be caught on each node's path.
 TEST(NetworkContact, FallThroughAThinSheetIsCaught) {

@@ -63,6 +63,11 @@ struct NetworkSolution {
   std::vector<JunctionLoads> junctions;
   std::vector<ContactLoad> contacts;
   double max_penetration = 0.0;  // [m] deepest remaining overlap of cable surface and solids
+  /// Solids (indices into NetworkSpec::obstacles) the drawing runs the cable into by more than
+  /// a quarter of its radius next to a support (within two diameters): a pipe in its flange, a
+  /// wire in its connector. Held there by the support, they are no contact surfaces for it
+  /// (pushing it out would fight the clamp).
+  std::vector<int> attached_obstacles;
   int contact_rounds = 0;
   int num_elements = 0;
   bool converged() const { return summary.converged(); }
