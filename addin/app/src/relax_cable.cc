@@ -70,13 +70,15 @@ std::vector<Candidate> Place(std::vector<Candidate> all, double gap,
 
 }  // namespace
 
-MaterialSpec DefaultBundleMaterial(double d) {
+MaterialSpec DefaultBundleMaterial(double d, double bore) {
   MaterialSpec m;
   m.diameter = d;
-  m.bending_stiffness = kDefaultBundleModulus * std::numbers::pi * std::pow(d, 4) / 64;
+  const double second_moment = std::pow(d, 4) - std::pow(bore, 4);  // x pi / 64
+  const double area = d * d - bore * bore;                          // x pi / 4
+  m.bending_stiffness = kDefaultBundleModulus * std::numbers::pi * second_moment / 64;
   m.torsional_stiffness = m.bending_stiffness / 1.3;
-  m.linear_density = kDefaultBundleDensity * std::numbers::pi * d * d / 4;
-  m.axial_stiffness = kDefaultAxialModulus * std::numbers::pi * d * d / 4;
+  m.linear_density = kDefaultBundleDensity * std::numbers::pi * area / 4;
+  m.axial_stiffness = kDefaultAxialModulus * std::numbers::pi * area / 4;
   return m;
 }
 
@@ -103,22 +105,28 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.notes.push_back("drawn as a bare curve without diameter: " + Metres(diameter) +
                         " assumed (set \"diameter\" in harness.json)");
   }
+  // A drawn bore (hose, conduit) holds while the outer diameter is the drawn one.
+  if (drawn.inner_diameter > 0 && drawn.inner_diameter < diameter) out.bore = drawn.inner_diameter;
   if (cc.material) {
     out.spec.material = *cc.material;
     out.material_source = cc.material_source;
   } else {
-    out.spec.material = DefaultBundleMaterial(diameter);
+    out.spec.material = DefaultBundleMaterial(diameter, out.bore);
     out.material_defaulted = true;
     out.material_source = "default bundle estimate";
     out.notes.push_back(
-        "material not given: PVC-insulated copper bundle estimated from the diameter "
-        "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)");
+        out.bore > 0
+            ? "material not given: a hollow tube (bore " + Metres(out.bore) +
+                  ") estimated like a PVC-insulated bundle over its wall (E_eff = 75 MPa, GJ = "
+                  "EI/1.3, 2000 kg/m^3 over the annulus)"
+            : "material not given: PVC-insulated copper bundle estimated from the diameter "
+              "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)");
   }
   out.spec.material.diameter = diameter;
   // A cable drawn taut between two supports has a tension only through its stretch: a material
   // without EA gets the bundle estimate's, which only matters where there is no slack.
   if (!(out.spec.material.axial_stiffness > 0)) {
-    out.spec.material.axial_stiffness = DefaultBundleMaterial(diameter).axial_stiffness;
+    out.spec.material.axial_stiffness = DefaultBundleMaterial(diameter, out.bore).axial_stiffness;
   }
   out.spec.name = drawn.name;
   out.spec.length = built_length;
@@ -334,6 +342,7 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
   j["drawn_length"] = su.drawn_length;
   j["diameter"] = spec.material.diameter;
   j["diameter_defaulted"] = su.diameter_defaulted;
+  j["inner_diameter"] = su.bore;  // bore of a hollow tube (hose, conduit), 0 for a solid one
   j["material"] = {{"bending_stiffness", spec.material.bending_stiffness},
                    {"axial_stiffness", spec.material.axial_stiffness},
                    {"torsional_stiffness", spec.material.torsional_stiffness},

@@ -129,6 +129,7 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
     c.name = stem + "#" + std::to_string(k + 1);
     c.centreline = tubes[k].centreline;
     c.diameter = tubes[k].diameter;
+    c.inner_diameter = tubes[k].inner_diameter;
     c.source = CableSourceKind::kMesh;
     c.fit_error = tubes[k].fit_error;
     min_diameter = std::min(min_diameter, c.diameter);

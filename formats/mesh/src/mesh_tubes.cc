@@ -10,10 +10,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <limits>
 #include <numeric>
+#include <optional>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/mesh_file.h"
+#include "hollow_tubes.h"
 #include "mcf_skeleton.h"
 #include "skeleton_routes.h"
 
@@ -284,6 +287,37 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
   return tubes;
 }
 
+// A hollow tube: its outer wall and its bore, each capped and read as a solid tube, must be
+// one coaxial tube each, the bore inside the wall.
+std::optional<MeshTube> HollowTube(const TriangleMesh& mesh, int component) {
+  if (internal::EulerCharacteristic(mesh) != 0) return std::nullopt;
+  std::vector<MeshTube> walls;
+  for (const TriangleMesh& wall : internal::CappedWalls(mesh)) {
+    try {
+      std::vector<MeshTube> tubes = TubesOfComponent(wall, component);
+      if (tubes.size() != 1) return std::nullopt;
+      walls.push_back(std::move(tubes.front()));
+    } catch (const InvalidInput&) {
+      return std::nullopt;
+    }
+  }
+  if (walls.size() != 2) return std::nullopt;
+  if (walls[0].diameter < walls[1].diameter) std::swap(walls[0], walls[1]);
+  MeshTube& outer = walls[0];
+  const MeshTube& bore = walls[1];
+  const double radius = 0.5 * outer.diameter;
+  for (int i = 0; i < bore.centreline.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < outer.centreline.size(); ++j)
+      nearest = std::min(nearest, (bore.centreline.points.col(i) - outer.centreline.points.col(j)).norm());
+    if (nearest > 0.25 * radius + outer.centreline.ChordLength() / outer.centreline.size())
+      return std::nullopt;
+  }
+  if (!(bore.diameter < 0.98 * outer.diameter)) return std::nullopt;
+  outer.inner_diameter = bore.diameter;
+  return std::move(outer);
+}
+
 }  // namespace
 
 MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
@@ -307,7 +341,12 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
       }
       for (auto& t : more) out.tubes.push_back(std::move(t));
     } catch (const InvalidInput& e) {
-      out.parts.push_back({component, components[c], e.what()});
+      if (std::optional<MeshTube> hollow = HollowTube(components[c], component);
+          hollow && hollow->centreline.ChordLength() >= min_aspect * hollow->diameter) {
+        out.tubes.push_back(std::move(*hollow));
+      } else {
+        out.parts.push_back({component, components[c], e.what()});
+      }
     }
   }
   return out;

@@ -55,6 +55,51 @@ TEST(MeshFile, BentTubeStlReadsBackWithinOnePercentOfDiameter) {
   EXPECT_NEAR(tubes[0].centreline.points(0, 0), 0.0, 0.01 * diameter);
 }
 
+// A hose as a mesh: outer wall and bore (both from SweepTubeMesh's rings) joined by flat annuli
+// at the ends, so the surface is one closed component of genus one.
+TriangleMesh HoseMesh(const Polyline& route, double outer, double bore, int sides) {
+  const TriangleMesh o = SweepTubeMesh(route, outer, sides), i = SweepTubeMesh(route, bore, sides);
+  const int n = route.size(), ring = n * sides;
+  TriangleMesh m;
+  m.vertices.resize(3, 2 * ring);
+  m.vertices << o.vertices.leftCols(ring), i.vertices.leftCols(ring);
+  const int wall = 2 * (n - 1) * sides;
+  m.faces.resize(3, 2 * wall + 4 * sides);
+  m.faces.leftCols(wall) = o.faces.leftCols(wall);
+  for (int f = 0; f < wall; ++f)  // the bore faces the axis: reversed
+    m.faces.col(wall + f) << i.faces(0, f) + ring, i.faces(2, f) + ring, i.faces(1, f) + ring;
+  int f = 2 * wall;
+  for (int k = 0; k < sides; ++k) {
+    const int k1 = (k + 1) % sides, last = (n - 1) * sides;
+    m.faces.col(f++) << ring + k, k1, k;  // start annulus, facing back along the route
+    m.faces.col(f++) << ring + k, ring + k1, k1;
+    m.faces.col(f++) << ring + last + k, last + k, last + k1;  // end annulus
+    m.faces.col(f++) << ring + last + k, last + k1, ring + last + k1;
+  }
+  return m;
+}
+
+TEST(MeshFile, AHoseWithItsBoreIsOneCableWithBothDiameters) {
+  const double outer = 0.010, bore = 0.006;
+  const Polyline truth = SampleCurve(BentRoute, 4001);
+  const TriangleMesh hose = HoseMesh(SampleCurve(BentRoute, 161), outer, bore, 32);
+  const auto path = (testing::FreshTempDir("mesh_hose") / "hose.stl").string();
+  WriteMeshFile(path, hose, 0.001);
+  const MeshContents contents = ReadMeshContents(path, 0.001);
+  EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  const MeshTube& tube = contents.tubes[0];
+  EXPECT_NEAR(tube.diameter, outer, 0.01 * outer);
+  EXPECT_NEAR(tube.inner_diameter, bore, 0.01 * bore);
+  EXPECT_LT(MaxDistanceToPolyline(tube.centreline, truth), 0.01 * outer);
+  EXPECT_LT(MaxDistanceToPolyline(truth, tube.centreline), 0.01 * outer);
+  // The same walls without the bore: a solid tube, no inner diameter.
+  WriteMeshFile(path, SweepTubeMesh(SampleCurve(BentRoute, 161), outer, 32), 0.001);
+  const std::vector<MeshTube> solid = ReadMeshFile(path, 0.001);
+  ASSERT_EQ(solid.size(), 1u);
+  EXPECT_EQ(solid[0].inner_diameter, 0.0);
+}
+
 // A finely tessellated 0.92 m S-shaped tube (64 sides, 60k triangles, a 3 MB STL): one cable,
 // not several around the doubled skeleton paths the flow leaves along it (before: three cables
 // around a 41 mm spur running beside the axis), on its route within 1 % of the diameter.

@@ -35,8 +35,9 @@ inline constexpr double kTautSlack = 0.005;
 inline constexpr double kDefaultDiameter = 0.008;
 
 /// EI = E pi d^4 / 64, GJ = EI / 1.3 (G = E / 2.6, nu ~ 0.3), mass = rho pi d^2 / 4,
-/// EA = E_axial pi d^2 / 4.
-MaterialSpec DefaultBundleMaterial(double diameter);  // diameter [m]
+/// EA = E_axial pi d^2 / 4; a hollow tube (hose, conduit) of bore b has d^4 - b^4 and
+/// d^2 - b^2 in their place.
+MaterialSpec DefaultBundleMaterial(double diameter, double bore = 0.0);  // [m]
 
 /// The rod set-up of one drawn cable.
 struct CableSetup {
@@ -46,6 +47,7 @@ struct CableSetup {
   double drawn_length = 0.0;  ///< [m] of the route; spec.length may differ (harness.json "length")
   RodSpec spec;
   bool diameter_defaulted = false;
+  double bore = 0.0;  ///< [m] inner diameter of a hollow tube (hose, conduit), 0 when solid
   bool material_defaulted = false;
   std::string material_source;  ///< "default bundle estimate", harness.json, section file
   std::vector<std::string>

@@ -15,6 +15,7 @@ struct MeshTube {
   Polyline centreline;   ///< s from 0 [m], points 3 x n [m]; starts at its lexicographically
                          ///< smaller end (x, then y, then z) so the result is deterministic
   double diameter = 0.0; ///< [m], twice the median distance of its surface to the centreline
+  double inner_diameter = 0.0; ///< [m] bore of a hollow tube (hose, conduit), 0 when solid
   double fit_error = 0.0;///< RMS of (surface distance to centreline - radius) [m]
 };
 
