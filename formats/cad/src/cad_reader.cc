@@ -32,6 +32,7 @@
 #include "cad_shape_handle.h"
 #include "cad_read_in_process.h"
 #include "crash_probe.h"
+#include "curve_pieces.h"
 #include "drawn_sweeps.h"
 #include "curve_routes.h"
 #include "occt_session.h"
@@ -117,20 +118,6 @@ std::vector<TopoDS_Shape> SewFaces(const std::vector<TopoDS_Shape>& faces) {
     bodies.push_back(ex.Current());
   }
   return bodies;
-}
-
-// A closed curve lying in one plane: the profile sketch a sweep was made from (FreeCAD keeps
-// them beside the swept cable), never a cable route, which would need two ends to hold.
-bool IsClosedPlanar(const Eigen::Matrix3Xd& points) {  // 3 x n [OCCT unit]
-  if (points.cols() < 4) return false;
-  const Eigen::Vector3d centroid = points.rowwise().mean();
-  const Eigen::Matrix3Xd centred = points.colwise() - centroid;
-  const double size = centred.colwise().norm().maxCoeff();
-  if (!(size > 0)) return false;
-  if ((points.col(0) - points.col(points.cols() - 1)).norm() > 1e-6 * size) return false;
-  const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred, Eigen::ComputeThinU);
-  const Eigen::Vector3d normal = svd.matrixU().col(2);
-  return (normal.transpose() * centred).cwiseAbs().maxCoeff() <= 1e-4 * size;
 }
 
 // Names that STEP/IGES exporters write when the user gave none: treated as no name, so that
@@ -490,6 +477,9 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
     std::vector<DrawnTube> tubes;
     DrawingBuilder builder(doc, options, &drawing, &tubes);
     builder.WalkFreeShapes();
+    const std::vector<int> moved = JoinCurvePieces(&drawing, options.junction_tolerance);
+    for (DrawnTube& t : tubes)
+      if (t.is_cable) t.index = moved[static_cast<size_t>(t.index)];
     MergeSweepsIntoCurves(tubes, &drawing);
   } catch (const Standard_Failure& e) {
     throw FileError(path, std::string("OCCT could not read the file: ") + e.GetMessageString());

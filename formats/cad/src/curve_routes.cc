@@ -8,6 +8,7 @@
 #include <TopTools_MapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -69,6 +70,18 @@ CurveRoute SampleChain(const std::vector<std::pair<const Link*, bool>>& chain, d
 }
 
 }  // namespace
+
+bool IsClosedPlanar(const Eigen::Matrix3Xd& points) {
+  if (points.cols() < 4) return false;
+  const Eigen::Vector3d centroid = points.rowwise().mean();
+  const Eigen::Matrix3Xd centred = points.colwise() - centroid;
+  const double size = centred.colwise().norm().maxCoeff();
+  if (!(size > 0)) return false;
+  if ((points.col(0) - points.col(points.cols() - 1)).norm() > 1e-6 * size) return false;
+  const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred, Eigen::ComputeThinU);
+  const Eigen::Vector3d normal = svd.matrixU().col(2);
+  return (normal.transpose() * centred).cwiseAbs().maxCoeff() <= 1e-4 * size;
+}
 
 std::vector<CurveRoute> ExtractCurveRoutes(const TopoDS_Shape& shape, double spacing,
                                            double tolerance) {

@@ -21,4 +21,9 @@ struct CurveRoute {
 std::vector<CurveRoute> ExtractCurveRoutes(const TopoDS_Shape& shape, double spacing,
                                            double tolerance);
 
+/// A closed curve lying in one plane (points 3 x n, any length unit): the profile sketch a
+/// sweep was made from (FreeCAD keeps them beside the swept cable), never a cable route, which
+/// would need two ends to hold.
+bool IsClosedPlanar(const Eigen::Matrix3Xd& points);
+
 }  // namespace cablefit
