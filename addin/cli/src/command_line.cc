@@ -50,7 +50,7 @@ std::string HelpCommand(CLI::App& app) {
 
 }  // namespace
 
-int RunCommandLine(int argc, char** argv) {
+int RunCommandLineWith(int argc, char** argv, std::initializer_list<RegisterCommand> commands) {
   // Named here, not from argv[0], so that usage lines read "cablefit relax", wherever it lives.
   CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
                "does not look like the real one",
@@ -58,11 +58,7 @@ int RunCommandLine(int argc, char** argv) {
   app.set_version_flag("--version", ToolVersion());
   app.require_subcommand(1);
   int exit_code = kExitOk;
-  RegisterSimulateCommand(app, &exit_code);
-  RegisterDiagnoseCommand(app, &exit_code);
-  RegisterRelaxCommand(app, &exit_code);
-  RegisterSectionCommand(app, &exit_code);
-  RegisterBenchCommand(app, &exit_code);
+  for (RegisterCommand add : commands) add(app, &exit_code);
   // A first word that is no option and no command: say so, instead of CLI11's "a subcommand is
   // required"; "help" is what people type.
   if (argc > 1 && argv[1][0] != '-' && !IsCommand(app, argv[1])) {

@@ -2,6 +2,8 @@
 // adds one sub-command to the app; its callback stores the exit status in `*exit_code`.
 #pragma once
 
+#include <initializer_list>
+
 namespace CLI {
 class App;
 }
@@ -19,7 +21,12 @@ void RegisterDiagnoseCommand(CLI::App& app, int* exit_code);
 void RegisterRelaxCommand(CLI::App& app, int* exit_code);
 void RegisterSectionCommand(CLI::App& app, int* exit_code);
 
-/// Runs the whole command line (what main() does), returning the exit status.
+/// Runs the whole command line (what cablefit-full's main() does), returning the exit status.
 int RunCommandLine(int argc, char** argv);
+
+using RegisterCommand = void (*)(CLI::App& app, int* exit_code);
+/// The command line with only `commands`: RunCommandLine is this with all of them, and the
+/// start-up executable `cablefit` with the ones that need no CAD, mesh or rendering library.
+int RunCommandLineWith(int argc, char** argv, std::initializer_list<RegisterCommand> commands);
 
 }  // namespace cablefit::addin

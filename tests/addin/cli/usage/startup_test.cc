@@ -1,0 +1,66 @@
+// `cablefit` starts without the CAD, mesh, scan and rendering libraries: simulate and section run
+// in it, every other command in cablefit-full, with the same results either way.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "cli_runner.h"
+#include "test_support.h"
+
+namespace cablefit {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::Q;
+
+std::string Output(const std::string& command) {
+  std::string text;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return text;
+  std::array<char, 4096> buf;
+  while (const size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) text.append(buf.data(), n);
+  ::pclose(pipe);
+  return text;
+}
+
+std::string Slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Startup, TheCommandUsersRunLoadsNoCadMeshOrRenderingLibrary) {
+  const std::string needed = Output("ldd " + Q(testing::CablefitBinary()) + " 2>&1");
+  ASSERT_NE(needed.find("libc.so"), std::string::npos) << needed;
+  for (const char* heavy : {"libTK", "assimp", "OSMesa", "xml2", "gmp", "png", "GL"})
+    EXPECT_EQ(needed.find(heavy), std::string::npos) << heavy << " in\n" << needed;
+  // The full executable has them: the split is what keeps them out, not a lighter build.
+  const fs::path full = fs::path(testing::CablefitBinary()).parent_path() / "cablefit-full";
+  EXPECT_NE(Output("ldd " + Q(full) + " 2>&1").find("libTK"), std::string::npos);
+}
+
+TEST(Startup, SimulateGivesTheSameResultInEitherExecutable) {
+  const auto out = testing::FreshTempDir("startup_simulate");
+  const fs::path c = testing::SourceDir() / "tests/data/cases/public/sample-none";
+  const auto light = testing::RunCablefit("simulate " + Q(c) + " --out " + Q(out / "light"));
+  ASSERT_EQ(light.exit_code, 0) << light.err;
+  const fs::path full = fs::path(testing::CablefitBinary()).parent_path() / "cablefit-full";
+  ASSERT_EQ(std::system((Q(full) + " simulate " + Q(c) + " --out " + Q(out / "full") +
+                         " > /dev/null").c_str()),
+            0);
+  EXPECT_EQ(Slurp(out / "light" / "centerline.csv"), Slurp(out / "full" / "centerline.csv"));
+  // And a command the start-up executable hands on still runs (and exits) as before.
+  const auto relax = testing::RunCablefit("relax " + Q(out / "missing.step") + " --out " +
+                                          Q(out / "r"));
+  EXPECT_EQ(relax.exit_code, 2) << relax.err;
+  EXPECT_NE(relax.err.find("missing.step"), std::string::npos) << relax.err;
+}
+
+}  // namespace
+}  // namespace cablefit
