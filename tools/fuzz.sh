@@ -11,7 +11,7 @@ SECONDS_PER_TARGET=${FUZZ_SECONDS:-30}
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(ply centerline_csv force_curve_csv case_json truth_json json_util harness_config
-           section_json)
+           section_json kbl)
 fi
 mkdir -p "$BUILD_DIR"
 CC=clang CXX=clang++ cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release \
@@ -30,6 +30,7 @@ for t in "${targets[@]}"; do
   log="$PWD/$BUILD_DIR/fuzz-$t.log"
   case "$t" in
     ply) dict=tests/fuzz/ply.dict ;;
+    kbl) dict=tests/fuzz/kbl.dict ;;
     *_csv) dict=tests/fuzz/csv.dict ;;
     *) dict=tests/fuzz/json.dict ;;
   esac
