@@ -208,7 +208,72 @@ Vec3 CapPoint(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double
   return end + reach * out;
 }
 
+// Every edge shared by exactly two faces (the skeleton helper says the same, later and dearer).
+bool IsClosedSurface(const TriangleMesh& mesh) {
+  std::vector<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.faces(k, f), b = mesh.faces((k + 1) % 3, f);
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i != 2) return false;
+    i = j;
+  }
+  return !edges.empty();
+}
+
+// A solid whose area lies almost all on a few planes (a box, a plate, a bracket bent from sheet)
+// has no circular sections: said without the skeleton, which costs seconds on such a shape
+// (remeshed to 15k triangles, a flow with no axis to contract to). A 12-sided tube, the
+// coarsest the section test accepts, spreads its area over 14 directions.
+constexpr int kFlatDirections = 8;
+constexpr double kFlatShare = 0.9;
+constexpr double kSameDirection = 0.996;  // cos 5 degrees
+bool MostlyOnFewPlanes(const TriangleMesh& mesh) {
+  struct Direction {
+    Vec3 normal;
+    double area;
+  };
+  std::vector<std::pair<double, Vec3>> faces;
+  double total = 0;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
+    const Vec3 a = mesh.vertices.col(mesh.faces(0, f)), b = mesh.vertices.col(mesh.faces(1, f)),
+               c = mesh.vertices.col(mesh.faces(2, f));
+    const Vec3 n = (b - a).cross(c - a);
+    if (!(n.norm() > 0)) continue;
+    faces.push_back({0.5 * n.norm(), n.normalized()});
+    total += 0.5 * n.norm();
+  }
+  std::stable_sort(faces.begin(), faces.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::vector<Direction> directions;
+  for (const auto& [area, normal] : faces) {
+    auto it = std::find_if(directions.begin(), directions.end(),
+                           [&](const Direction& d) { return d.normal.dot(normal) > kSameDirection; });
+    if (it != directions.end()) {
+      it->area += area;
+      continue;
+    }
+    if (directions.size() >= 64) return false;  // curved: many directions
+    directions.push_back({normal, area});
+  }
+  std::sort(directions.begin(), directions.end(),
+            [](const Direction& x, const Direction& y) { return x.area > y.area; });
+  double top = 0;
+  for (size_t k = 0; k < directions.size() && k < kFlatDirections; ++k) top += directions[k].area;
+  return total > 0 && top >= kFlatShare * total;
+}
+
 std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) {
+  if (!IsClosedSurface(mesh)) throw InvalidInput("the mesh is not a closed surface");
+  if (MostlyOnFewPlanes(mesh)) {
+    throw InvalidInput("component " + std::to_string(component) +
+                       " is not a tube (flat faces: a box, plate or bracket)");
+  }
   const CurveSkeleton skeleton = ComputeMcfSkeletonInHelper(mesh);
   // A first radius from the skeleton's correspondences: the median vertex-to-node distance.
   std::vector<double> distances;
