@@ -110,9 +110,7 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.spec.material = DefaultBundleMaterial(diameter);
     out.material_defaulted = true;
     out.material_source = "default bundle estimate";
-    out.notes.push_back(
-        "material not given: PVC-insulated copper bundle estimated from the diameter "
-        "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)");
+    out.notes.push_back(kDefaultMaterialNote);
   }
   out.spec.material.diameter = diameter;
   // A cable drawn taut between two supports has a tension only through its stretch: a material

@@ -5,6 +5,7 @@
 
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/app/diagnose_output.h"
+#include "cablefit/app/provenance.h"
 #include "cablefit/app/report_html.h"
 
 namespace cablefit::addin {
@@ -211,7 +212,14 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     << Fact("supports", std::to_string(rc.nominal.supports.size()))
     << "</div></section>\n";
 
-  h << "<section class=\"card\"><h2>Files</h2>\n" << FilesList(d, pictures) << "</section>\n";
+  h << "<section class=\"card\"><h2>Files</h2>\n" << FilesList(d, pictures);
+  {
+    // The same facts as diagnosis.json's provenance: what this page was made from, by what.
+    std::vector<std::pair<std::string, std::string>> sources = {{"case", d.recording.case_file}};
+    for (const RecordingRef& r : d.recording.recordings) sources.emplace_back(ToString(r.kind), r.path);
+    h << ProvenanceHtml(ProvenanceJson(sources));
+  }
+  h << "</section>\n";
   h << "</main>\n";
   h << PageTail("cablefit diagnose \u00b7 " + HtmlEscape(rc.name) + " \u00b7 " +
                 FormatSeconds(d.seconds));

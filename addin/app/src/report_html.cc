@@ -35,10 +35,16 @@ std::string FormatNumber(double value, int digits) {
 
 std::string FormatLength(double metres) {
   if (!std::isfinite(metres)) return "\u2013";
-  const double a = std::abs(metres);
-  if (a >= 1.0) return FormatNumber(metres) + " m";
-  if (a >= 1e-3 || a == 0.0) return FormatNumber(metres * 1e3) + " mm";
-  return FormatNumber(metres * 1e6) + " \u00b5m";
+  // Always millimetres, as a harness drawing is dimensioned: a column of lengths then compares
+  // at a glance. Whole millimetres from 100 mm on, three significant digits below.
+  const double mm = metres * 1e3;
+  const double a = std::abs(mm);
+  char buf[64];
+  if (a >= 100.0) {
+    std::snprintf(buf, sizeof buf, "%.0f mm", mm);
+    return buf;
+  }
+  return FormatNumber(mm) + " mm";
 }
 
 std::string FormatDeviation(double value, const std::string& unit) {
@@ -153,6 +159,9 @@ ul.notes { margin:0; padding-left:20px; color:var(--warn); }
 a { color:var(--accent); }
 footer { color:var(--muted); font-size:12px; text-align:center; padding:10px 0 30px; }
 .error { color:var(--fail); }
+p.provenance { color:var(--muted); font-size:12px; overflow-wrap:anywhere; margin:8px 0 0; }
+.table-wrap { overflow-x:auto; }
+td small { color:var(--muted); }
 code { font-family:"DejaVu Sans Mono", Menlo, Consolas, monospace; font-size:13px; }
 )css";
 

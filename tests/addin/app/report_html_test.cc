@@ -18,8 +18,10 @@ TEST(ReportHtml, FormatsNumbersWithUnits) {
   EXPECT_EQ(FormatNumber(1.23456e-6), "1.23e-06");
   EXPECT_EQ(FormatNumber(NAN), "\u2013");
   EXPECT_EQ(FormatLength(0.0123), "12.3 mm");
-  EXPECT_EQ(FormatLength(4.5e-6), "4.5 \u00b5m");
-  EXPECT_EQ(FormatLength(1.5), "1.5 m");
+  // One unit in every report: millimetres, whole ones from 100 mm on.
+  EXPECT_EQ(FormatLength(4.5e-6), "0.0045 mm");
+  EXPECT_EQ(FormatLength(1.5), "1500 mm");
+  EXPECT_EQ(FormatLength(0.8294), "829 mm");
   EXPECT_EQ(FormatDeviation(0.004, "N"), "0.004 N");
   EXPECT_EQ(FormatParameter(std::acos(-1.0), "rad"), "3.142 rad (180.00\u00b0)");
   EXPECT_EQ(ParameterUnit("curvature", "", ""), "1/m");

@@ -15,7 +15,8 @@ std::string HtmlEscape(const std::string& text);
 /// "1.23e-06"); "–" for NaN/Inf.
 std::string FormatNumber(double value, int digits = 3);
 
-/// A length in the unit that reads best: "12.3 mm", "0.45 m", "8.1 µm".
+/// A length in millimetres, the one length unit of every report: "12.3 mm", "450 mm",
+/// "0.0081 mm".
 std::string FormatLength(double metres);
 
 /// A deviation in `unit` ("m" -> FormatLength, else number + unit).
