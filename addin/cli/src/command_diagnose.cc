@@ -36,7 +36,7 @@ namespace {
 struct DiagnoseArgs {
   std::vector<std::string> paths;
   std::string out_dir;
-  int jobs = 1;
+  int jobs = 0;  // one per core, as relax; a case left alone runs its fits on the idle cores
   double timeout = 0.0;  // [s] per case, 0 = no limit
   bool quiet = false;        // no per-case lines, no progress bar
   std::string summary_json;  // --summary-json FILE, empty = none
@@ -152,8 +152,9 @@ int RunDiagnose(const DiagnoseArgs& a) {
                            d.deviation_unit, seconds, ""};
         o.ok = true;
         char line[512];
-        std::snprintf(line, sizeof line, "%s: %s, confidence %.2f, %.1f s", d.recording.name.c_str(),
-                      d.effect.c_str(), d.confidence, seconds);
+        // Confidence in per cent, as the reports give it.
+        std::snprintf(line, sizeof line, "%s: %s, confidence %.0f %%, %s", d.recording.name.c_str(),
+                      d.effect.c_str(), 100.0 * d.confidence, FormatSeconds(seconds).c_str());
         if (!a.quiet) bar.PrintLine(stdout, line);
       } catch (...) {
         o.row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
