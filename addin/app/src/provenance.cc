@@ -1,6 +1,7 @@
 #include "cablefit/app/provenance.h"
 
 #include <ctime>
+#include <filesystem>
 #include <mutex>
 
 #include "cablefit/app/report_html.h"
@@ -69,10 +70,15 @@ nlohmann::json ProvenanceJson(const std::vector<std::pair<std::string, std::stri
   for (const auto& [role, path] : inputs) {
     if (path.empty()) continue;
     nlohmann::json sha = nullptr;
-    try {
-      sha = FileSha256(path);
-    } catch (const FileError&) {
-      // The input was read a moment ago; if it is gone now, say so rather than fail the output.
+    // Only a regular file has bytes to hash: reading a FIFO (a failed input of a batch) would
+    // wait for a writer forever.
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) {
+      try {
+        sha = FileSha256(path);
+      } catch (const FileError&) {
+        // The input was read a moment ago; if it is gone now, say so rather than fail the output.
+      }
     }
     list.push_back({{"role", role}, {"path", path}, {"sha256", sha}});
   }

@@ -40,8 +40,17 @@ std::string ParametersTable(const DiagnosedCase& d) {
   };
   for (const auto& [name, value] : d.parameters) {
     const std::string unit = unit_of(name);
-    h << "<tr><td><code>" << HtmlEscape(name) << "</code></td><td class=\"num\">"
-      << HtmlEscape(FormatParameter(value, unit)) << "</td><td>" << HtmlEscape(unit)
+    // The unit has its own column: the value cell carries only the number (and degrees for an
+    // angle, which people read better than radians).
+    std::string text = FormatNumber(value, 4);
+    if (unit == "rad") {
+      const std::string with_degrees = FormatParameter(value, unit);
+      text += with_degrees.substr(with_degrees.find(" rad") + 4);
+    }
+    const std::string meaning = ParameterMeaning(name);
+    h << "<tr><td><code>" << HtmlEscape(name) << "</code>"
+      << (meaning.empty() ? "" : "<br><small>" + HtmlEscape(meaning) + "</small>")
+      << "</td><td class=\"num\">" << HtmlEscape(text) << "</td><td>" << HtmlEscape(unit)
       << "</td></tr>\n";
   }
   for (const auto& [name, v] : d.vectors) {
@@ -146,14 +155,21 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
   h << "<section class=\"card\"><h2>Verdict</h2><div class=\"facts\">\n"
     << Fact("effect", HtmlEscape(d.effect))
     << Fact("confidence", FormatNumber(100.0 * d.confidence, 3) + " %")
-    << Fact("interval", d.interval ? FormatInterval(*d.interval) + " m" : "\u2013")
-    << Fact("clamp", d.clamp ? std::to_string(*d.clamp) : "\u2013")
+    ;
+  // A force test has no place along the cable and no clamp to blame: those facts are shape's.
+  if (d.kind == CaseKind::kShape) {
+    h << Fact("interval", d.interval ? HtmlEscape(FormatLength(d.interval->first) + " \u2013 " +
+                                                  FormatLength(d.interval->second))
+                                     : "\u2013")
+      << Fact("clamp", d.clamp ? std::to_string(*d.clamp) : "\u2013");
+  }
+  h
     << Fact("baseline max / rms", HtmlEscape(FormatDeviation(d.baseline.max, d.deviation_unit) +
                                              " / " +
                                              FormatDeviation(d.baseline.rms, d.deviation_unit)))
     << Fact("fitted max / rms", HtmlEscape(FormatDeviation(d.fitted.max, d.deviation_unit) + " / " +
                                            FormatDeviation(d.fitted.rms, d.deviation_unit)))
-    << Fact("run time", FormatSeconds(d.seconds));
+    << Fact("diagnosis time", FormatSeconds(d.seconds) + " (without writing the outputs)");
   if (d.kind == CaseKind::kShape) {
     h << Fact("fitted to", HtmlEscape(d.observation_source) + " (" +
                                std::to_string(d.observation.points.cols()) + " points)")

@@ -93,6 +93,22 @@ std::string ParameterUnit(const std::string& name, const std::string& x_unit,
   return "";
 }
 
+std::string ParameterMeaning(const std::string& name) {
+  // The numbered parameters of a hysteresis fit: Iwan elements (a spring in series with a
+  // slider), each sticking up to its slip force.
+  if (name.rfind("f_slip_", 0) == 0)
+    return "slip force of hysteresis element " + name.substr(7) + " (slider in series with k_" +
+           name.substr(7) + ")";
+  if (name.rfind("k_", 0) == 0) return "stiffness of hysteresis element " + name.substr(2);
+  if (name == "element_count") return "hysteresis elements fitted";
+  if (name == "slip_force_total") return "sum of the elements' slip forces";
+  if (name == "sensor_offset") return "constant offset of the recorded force or moment";
+  if (name == "noise_sigma") return "scatter of the recording about the fitted curve";
+  if (name == "loop_area") return "area of the fitted hysteresis loop";
+  if (name == "recorded_loop_area") return "area of the recorded hysteresis loop";
+  return "";
+}
+
 std::string FormatParameter(double value, const std::string& unit) {
   std::string text = FormatNumber(value, 4);
   if (!unit.empty() && unit != "\u2013") text += " " + unit;

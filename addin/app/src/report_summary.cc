@@ -37,8 +37,10 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
 
   h << "<section class=\"card\"><h2>Cases</h2>\n<table class=\"sortable\"><thead><tr>"
        "<th>case</th><th>kind</th><th>effect</th><th class=\"num\">confidence</th>"
-       "<th>interval</th><th class=\"num\">clamp</th><th class=\"num\">baseline max</th>"
-       "<th class=\"num\">fitted max</th><th class=\"num\">time</th></tr></thead><tbody>\n";
+       "<th>interval</th><th class=\"num\">clamp</th>"
+       "<th class=\"num\">shape: baseline max</th><th class=\"num\">shape: fitted max</th>"
+       "<th class=\"num\">force: baseline max</th><th class=\"num\">force: fitted max</th>"
+       "<th class=\"num\">time</th></tr></thead><tbody>\n";
   for (const SummaryRow& r : rows) {
     h << "<tr><td>";
     if (!r.link.empty())
@@ -47,7 +49,7 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
       h << HtmlEscape(r.name);
     h << "</td><td>" << HtmlEscape(r.kind) << "</td>";
     if (!r.error.empty()) {
-      h << "<td><span class=\"badge fail\">failed</span></td><td colspan=\"5\" class=\"error\">"
+      h << "<td><span class=\"badge fail\">failed</span></td><td colspan=\"7\" class=\"error\">"
         << HtmlEscape(r.error) << "</td><td class=\"num\" data-value=\"" << r.seconds << "\">"
         << FormatSeconds(r.seconds) << "</td></tr>\n";
       continue;
@@ -59,12 +61,18 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
       << (r.interval && r.kind != "force"
               ? FormatLength(r.interval->first) + " \u2013 " + FormatLength(r.interval->second)
               : "\u2013")
-      << "</td><td class=\"num\" data-value=\"" << (r.clamp ? *r.clamp : -1) << "\">"
-      << (r.clamp ? std::to_string(*r.clamp) : "\u2013") << "</td><td class=\"num\" data-value=\""
-      << r.baseline_max << "\">" << HtmlEscape(FormatDeviation(r.baseline_max, r.deviation_unit))
+      << "</td><td class=\"num\" data-value=\"" << (r.clamp && r.kind != "force" ? *r.clamp : -1)
+      << "\">" << (r.clamp && r.kind != "force" ? std::to_string(*r.clamp) : "\u2013") << "</td>";
+    // Lengths and forces in columns of their own, so that a column sorts one quantity.
+    const bool force = r.kind == "force";
+    const std::string empty = "<td class=\"num\">\u2013</td><td class=\"num\">\u2013</td>";
+    if (force) h << empty;
+    h << "<td class=\"num\" data-value=\"" << r.baseline_max << "\">"
+      << HtmlEscape(FormatDeviation(r.baseline_max, r.deviation_unit))
       << "</td><td class=\"num\" data-value=\"" << r.fitted_max << "\">"
-      << HtmlEscape(FormatDeviation(r.fitted_max, r.deviation_unit))
-      << "</td><td class=\"num\" data-value=\"" << r.seconds << "\">" << FormatSeconds(r.seconds)
+      << HtmlEscape(FormatDeviation(r.fitted_max, r.deviation_unit)) << "</td>";
+    if (!force) h << empty;
+    h << "<td class=\"num\" data-value=\"" << r.seconds << "\">" << FormatSeconds(r.seconds)
       << "</td></tr>\n";
   }
   h << "</tbody></table>\n<p style=\"color:var(--muted);font-size:13px\">Click a column header "

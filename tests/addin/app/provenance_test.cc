@@ -3,6 +3,7 @@
 #include "cablefit/app/provenance.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <regex>
@@ -45,6 +46,16 @@ TEST(Provenance, JsonHasToolDateCommandLineAndEachInputsSha256) {
   EXPECT_NE(html.find("sha256 unreadable"), std::string::npos) << html;
   EXPECT_NE(html.find("<code>cablefit section in.txt</code>"), std::string::npos) << html;
   SetCommandLine(0, nullptr);
+}
+
+// A failed input of a batch may be a FIFO: hashing it would wait for a writer forever.
+TEST(Provenance, AFifoIsNotReadAndHasNoSha256) {
+  const auto dir = testing::FreshTempDir("provenance_fifo");
+  const std::string fifo = (dir / "case.json").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const nlohmann::json j = ProvenanceJson({{"case", fifo}});
+  ASSERT_EQ(j.at("inputs").size(), 1u);
+  EXPECT_TRUE(j.at("inputs")[0].at("sha256").is_null());
 }
 
 }  // namespace

@@ -41,7 +41,25 @@ TEST(RunSummaryHtml, IsSelfContainedSortableAndEscaped) {
   SummaryRow bad;
   bad.name = "in/b/case.json";
   bad.error = "in/b/scan.ply: truncated <vertex> data";
-  const std::string html = RunSummaryHtml({ok, bad}, 3.0, 2);
+  SummaryRow force;
+  force.name = "case-f";
+  force.link = "case-f/report.html";
+  force.kind = "force";
+  force.effect = "stiffness";
+  force.interval = std::make_pair(0.0, 0.829);
+  force.clamp = 0;
+  force.baseline_max = 2.5;
+  force.deviation_unit = "N";
+  const std::string html = RunSummaryHtml({ok, bad, force}, 3.0, 2);
+  // A force case shows no interval or clamp, and its newtons are not in the shape's length
+  // column (one column sorts one quantity); lengths in mm.
+  EXPECT_EQ(html.find("829 mm"), std::string::npos);
+  EXPECT_NE(html.find("100 mm \u2013 200 mm"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">\u2013</td><td class=\"num\">\u2013</td><td class=\"num\" "
+                      "data-value=\"2.5\">2.5 N</td>"),
+            std::string::npos);
+  EXPECT_EQ(ParameterMeaning("f_slip_2").rfind("slip force of hysteresis element 2", 0), 0u);
+  EXPECT_EQ(ParameterMeaning("curvature"), "");
   EXPECT_NE(html.find("<table class=\"sortable\">"), std::string::npos);
   EXPECT_NE(html.find("href=\"case-a/report.html\""), std::string::npos);
   EXPECT_NE(html.find("truncated &lt;vertex&gt; data"), std::string::npos);

@@ -29,7 +29,8 @@ std::string UtcNow();
 
 /// {"tool": ToolVersion(), "date": UtcNow(), "command_line": CommandLine(),
 ///  "inputs": [{"role", "path", "sha256"}...]} for (role, path) pairs; an empty path is left
-/// out, an unreadable file gets "sha256": null.
+/// out, an unreadable or non-regular file (a FIFO,
+/// a folder) gets "sha256": null.
 nlohmann::json ProvenanceJson(const std::vector<std::pair<std::string, std::string>>& inputs);
 
 /// The same facts as one HTML paragraph for a report's footer or header: tool, date, command

@@ -33,6 +33,10 @@ std::string FormatSeconds(double seconds);
 std::string ParameterUnit(const std::string& name, const std::string& x_unit,
                           const std::string& y_unit);
 
+/// What a parameter whose name does not say it means ("f_slip_1": "slip force of hysteresis
+/// element 1 ..."); "" for the self-explaining ones.
+std::string ParameterMeaning(const std::string& name);
+
 /// A parameter value with its unit; radians also in degrees ("0.191 rad (10.97°)").
 std::string FormatParameter(double value, const std::string& unit);
 
