@@ -106,6 +106,21 @@ std::string NumberCell(double value, const std::string& text) {
   return h.str();
 }
 
+// How many supports, and what each one carries: the force (and moment, for a clamp) it exerts
+// on the cable, which is what a clip or connector has to hold.
+std::string SupportsText(const CableRelaxation& r) {
+  std::string text = std::to_string(r.setup.spec.supports.size());
+  const auto& reactions = r.result.solution.reactions;
+  for (size_t k = 0; k < r.setup.spec.supports.size() && k < reactions.size(); ++k) {
+    text += "<br><small>" + std::string(ToString(r.setup.spec.supports[k].kind)) + " " +
+            FormatNumber(reactions[k].force.norm()) + " N";
+    if (r.setup.spec.supports[k].kind == SupportKind::kClamp)
+      text += ", " + FormatNumber(reactions[k].moment.norm()) + " N m";
+    text += "</small>";
+  }
+  return text;
+}
+
 std::string Row(const std::string& file, const std::string& cable, const CableRelaxation& r) {
   std::ostringstream h;
   const bool ok = r.result.converged && r.result.solution.summary.stable;
@@ -125,8 +140,7 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
                   FormatLength(r.setup.spec.material.diameter) +
                       (r.setup.diameter_defaulted ? " (assumed)" : ""))
     << "<td>" << MaterialCell(r.setup) << "</td>"
-    << NumberCell(static_cast<double>(r.setup.spec.supports.size()),
-                  std::to_string(r.setup.spec.supports.size()));
+    << NumberCell(static_cast<double>(r.setup.spec.supports.size()), SupportsText(r));
   std::string deviation = FormatLength(r.max_deviation) + "<br><small>at s = " +
                           FormatLength(r.max_deviation_s) + "</small>";
   if (r.springback_max && r.sag_max)
