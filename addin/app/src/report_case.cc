@@ -89,7 +89,9 @@ std::string CandidatesTable(const DiagnosedCase& d) {
   for (std::size_t i = 0; i < d.candidates.size(); ++i) {
     const auto& [effect, score] = d.candidates[i];
     h << "<tr" << (i == 0 ? " class=\"best\"" : "") << "><td>" << HtmlEscape(effect)
-      << "</td><td class=\"num\" data-value=\"" << score << "\">" << FormatNumber(score, 3)
+      // In per cent, as the verdict's confidence (the chosen effect's score) is given.
+      << "</td><td class=\"num\" data-value=\"" << score << "\">" << FormatNumber(100.0 * score, 3)
+      << " %"
       << "</td><td data-value=\"" << score << "\"><div class=\"bar\"><span style=\"width:"
       << std::max(0.0, std::min(100.0, 100.0 * score)) << "%\"></span></div></td>";
     const EffectCandidate* c = shape[i];
@@ -214,7 +216,8 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     << ParametersTable(d) << "</section>\n"
     << "<section class=\"card\"><h2>Candidates</h2>\n" << CandidatesTable(d)
     << "<p style=\"color:var(--muted);font-size:13px\">Score: posterior weight of each effect "
-       "from the Bayesian information criterion (\u0394BIC: difference to the best; above 10 is very "
+       "in per cent (the verdict's confidence is the chosen effect's, capped at 10 % when nothing "
+       "explains the recording) from the Bayesian information criterion (\u0394BIC: difference to the best; above 10 is very "
        "strong evidence against); the best is listed first.</p></section></div>\n";
 
   h << "<section class=\"card\"><h2>Nominal set-up</h2><div class=\"facts\">\n"
