@@ -121,15 +121,28 @@ std::string SupportsText(const CableRelaxation& r) {
   return text;
 }
 
+// A name that may break after '_', '-' and '#' (long input and cable names would otherwise
+// widen the table past the window).
+std::string BreakableName(const std::string& name) {
+  std::string out;
+  for (const char c : name) {
+    out += HtmlEscape(std::string(1, c));  // per character: an entity is never cut
+    if (c == '_' || c == '-' || c == '#') out += "<wbr>";
+  }
+  return out;
+}
+
 std::string Row(const std::string& file, const std::string& cable, const CableRelaxation& r) {
   std::ostringstream h;
   const bool ok = r.result.converged && r.result.solution.summary.stable;
   double least_slack = std::numeric_limits<double>::infinity();
   for (const CableRelaxation::Stretch& st : r.stretches) least_slack = std::min(least_slack, st.slack);
   const double relaxed_length = r.relaxed.size() > 1 ? r.relaxed.ChordLength() : r.setup.spec.length;
-  h << "<tr><td>" << HtmlEscape(file) << "</td><td>" << HtmlEscape(cable) << "</td>"
-    << NumberCell(r.setup.drawn_length, FormatLength(r.setup.drawn_length))
-    << NumberCell(relaxed_length, FormatLength(relaxed_length))
+  // Twelve columns fit a 1400 px window: related figures share a cell, the second one small.
+  h << "<tr><td>" << BreakableName(file) << "</td><td>" << BreakableName(cable) << "</td>"
+    << NumberCell(r.setup.drawn_length, FormatLength(r.setup.drawn_length) +
+                                            "<br><small>relaxed " + FormatLength(relaxed_length) +
+                                            "</small>")
     << NumberCell(least_slack, std::isfinite(least_slack)
                                    ? FormatNumber(100 * least_slack) + " %" +
                                          (r.taut ? " <span class=\"badge fail\">taut</span>" : "")
@@ -138,8 +151,8 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
                                                              : "\u2013")
     << NumberCell(r.setup.spec.material.diameter,
                   FormatLength(r.setup.spec.material.diameter) +
-                      (r.setup.diameter_defaulted ? " (assumed)" : ""))
-    << "<td>" << MaterialCell(r.setup) << "</td>"
+                      (r.setup.diameter_defaulted ? " (assumed)" : "") + "<br><small>" +
+                      MaterialCell(r.setup) + "</small>")
     << NumberCell(static_cast<double>(r.setup.spec.supports.size()), SupportsText(r));
   std::string deviation = FormatLength(r.max_deviation) + "<br><small>at s = " +
                           FormatLength(r.max_deviation_s) + "</small>";
@@ -152,12 +165,16 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
   bend += "<br><small>limit " + FormatLength(r.bend_limit) + "</small>";
   if (r.bend_flag) bend += " <span class=\"badge fail\">too tight</span>";
   h << NumberCell(r.min_bend_radius, bend)
-    << NumberCell(r.result.solution.twist_angle * 180 / M_PI,
-                  FormatNumber(r.result.solution.twist_angle * 180 / M_PI) + "\u00b0")
     << "<td><span class=\"badge " << (ok ? "ok" : "fail") << "\">"
     << (r.result.converged ? (r.result.solution.summary.stable ? "stable" : "unstable")
                            : "not converged")
-    << "</span></td><td><small>";
+    << "</span>"
+    << (std::isfinite(r.result.solution.twist_angle)
+            ? "<br><small>twist " + FormatNumber(r.result.solution.twist_angle * 180 / M_PI) +
+                  "\u00b0</small>"
+            : std::string())
+    << "</td>"
+    << "<td class=\"notes\"><small>";
   if (!r.setup.junction.empty()) h << "junction " << HtmlEscape(r.setup.junction) << "<br>";
   // The default-material note is said once above the table.
   for (const std::string& n : r.setup.notes)
@@ -279,12 +296,12 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
     h << "<p><b>Default material:</b> cables marked \"default estimate\" have no material in "
       << (config.path.empty() ? "a harness.json (give one with --config)" : "the harness.json")
       << "; " << HtmlEscape(kDefaultMaterialNote) << ".</p>\n";
-  h << "<div class=\"table-wrap\"><table class=\"sortable\"><thead><tr><th>input</th>"
-       "<th>cable</th><th class=\"num\">drawn length</th><th class=\"num\">relaxed length</th>"
-       "<th class=\"num\">slack</th><th class=\"num\">max tension</th>"
-       "<th class=\"num\">diameter</th><th>material</th><th class=\"num\">supports</th>"
-       "<th class=\"num\">max deviation</th><th class=\"num\">rms</th>"
-       "<th class=\"num\">min bend radius</th><th class=\"num\">twist</th><th>solver</th>"
+  h << "<div class=\"table-wrap\"><table class=\"sortable dense\"><thead><tr><th>input</th>"
+       "<th>cable</th><th class=\"num\">length<br>drawn, relaxed</th>"
+       "<th class=\"num\">slack</th><th class=\"num\">max<br>tension</th>"
+       "<th class=\"num\">diameter<br>material</th><th class=\"num\">supports<br>reactions</th>"
+       "<th class=\"num\">max deviation<br>where</th><th class=\"num\">rms</th>"
+       "<th class=\"num\">min bend radius<br>limit</th><th>solver</th>"
        "<th>notes</th></tr></thead><tbody>\n";
   std::vector<std::string> failures;
   for (const RelaxedFile& f : files) {
@@ -294,7 +311,7 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
         h << Row(f.stem, f.drawing.cables[i].name, *f.cables[i]);
       } else {
         h << "<tr><td>" << HtmlEscape(f.stem) << "</td><td>" << HtmlEscape(f.drawing.cables[i].name)
-          << "</td><td colspan=\"12\"><span class=\"badge fail\">failed</span> "
+          << "</td><td colspan=\"9\"><span class=\"badge fail\">failed</span> "
           << HtmlEscape(f.cable_errors[i]) << "</td><td></td></tr>\n";
       }
     }
