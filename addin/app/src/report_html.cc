@@ -178,9 +178,9 @@ footer { color:var(--muted); font-size:12px; text-align:center; padding:10px 0 3
 p.provenance { color:var(--muted); font-size:12px; overflow-wrap:anywhere; margin:8px 0 0; }
 .table-wrap { overflow-x:auto; }
 td small { color:var(--muted); }
-td.notes { min-width:150px; overflow-wrap:anywhere; }
+td.notes { min-width:120px; overflow-wrap:anywhere; }
 table.dense td:first-child { white-space:normal; }
-table.dense th, table.dense td { padding:6px 7px; font-size:14px; }
+table.dense th, table.dense td { padding:6px 6px; font-size:14px; }
 table.dense td.num small { white-space:normal; }
 code { font-family:"DejaVu Sans Mono", Menlo, Consolas, monospace; font-size:13px; }
 )css";
