@@ -114,7 +114,8 @@ std::string CandidatesTable(const DiagnosedCase& d) {
     if (has_bic) {
       if (c)
         h << "<td>" << (c->clamp ? std::to_string(*c->clamp) : "\u2013") << "</td><td>"
-          << (c->interval ? FormatInterval(*c->interval) + " m" : "\u2013") << "</td><td>"
+          << (c->interval ? FormatLength(c->interval->first) + " \u2013 " + FormatLength(c->interval->second)
+                        : "\u2013") << "</td><td>"
           << (c->converged ? "converged" : "iteration limit") << "</td>";
       else
         h << "<td></td><td></td><td></td>";
