@@ -16,9 +16,11 @@ using json::Json;
 using json::NumberOrNull;
 using json::ToJson;
 
-std::string Metres(double v) {
+// A length [m] for a message or note a person reads: in millimetres, like every human-facing
+// length of the tool (the JSON fields stay in metres).
+std::string Millimetres(double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g m", v);
+  std::snprintf(buf, sizeof buf, "%.4g mm", 1e3 * v);
   return buf;
 }
 
@@ -55,12 +57,12 @@ std::vector<Candidate> Place(std::vector<Candidate> all, double gap,
     if (clash == kept.end()) {
       kept.push_back(c);
     } else if (c.priority <= 1) {
-      notes->push_back(c.origin + " at s=" + Metres(c.spec.s) + " ignored: within " + Metres(gap) +
+      notes->push_back(c.origin + " at s=" + Millimetres(c.spec.s) + " ignored: within " + Millimetres(gap) +
                        " of the " + clash->origin + " support");
     } else {
-      throw InvalidInput(c.origin + " support at s=" + Metres(c.spec.s) + " is within " +
-                         Metres(gap) + " of the " + clash->origin + " support at s=" +
-                         Metres(clash->spec.s) + " (give one support there, or set the end)");
+      throw InvalidInput(c.origin + " support at s=" + Millimetres(c.spec.s) + " is within " +
+                         Millimetres(gap) + " of the " + clash->origin + " support at s=" +
+                         Millimetres(clash->spec.s) + " (give one support there, or set the end)");
     }
   }
   std::sort(kept.begin(), kept.end(),
@@ -102,7 +104,7 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   if (!(diameter > 0)) {
     diameter = kDefaultDiameter;
     out.diameter_defaulted = true;
-    out.notes.push_back("drawn as a bare curve without diameter: " + Metres(diameter) +
+    out.notes.push_back("drawn as a bare curve without diameter: " + Millimetres(diameter) +
                         " assumed (set \"diameter\" in harness.json)");
   }
   // A drawn bore (hose, conduit) holds while the outer diameter is the drawn one.
@@ -114,13 +116,12 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.spec.material = DefaultBundleMaterial(diameter, out.bore);
     out.material_defaulted = true;
     out.material_source = "default bundle estimate";
-    out.notes.push_back(
-        out.bore > 0
-            ? "material not given: a hollow tube (bore " + Metres(out.bore) +
-                  ") estimated like a PVC-insulated bundle over its wall (E_eff = 75 MPa, GJ = "
-                  "EI/1.3, 2000 kg/m^3 over the annulus)"
-            : "material not given: PVC-insulated copper bundle estimated from the diameter "
-              "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)");
+    // The hollow-tube note differs from the solid one, so the report lists it per cable.
+    out.notes.push_back(out.bore > 0
+                            ? "material not given: a hollow tube (bore " + Millimetres(out.bore) +
+                                  ") estimated like a PVC-insulated bundle over its wall (E_eff = "
+                                  "75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the annulus)"
+                            : std::string(kDefaultMaterialNote));
   }
   out.spec.material.diameter = diameter;
   // A cable drawn taut between two supports has a tension only through its stretch: a material
@@ -132,13 +133,13 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   out.spec.length = built_length;
   out.drawn_length = length;
   if (built_length != length) {
-    out.notes.push_back("built " + Metres(built_length) + " long (harness.json \"length\": " +
-                        cc.length->ToString() + "), drawn " + Metres(length));
+    out.notes.push_back("built " + Millimetres(built_length) + " long (harness.json \"length\": " +
+                        cc.length->ToString() + "), drawn " + Millimetres(length));
   }
   out.spec.gravity = cc.gravity.value_or(config.gravity);
   if (cc.min_bend_radius) {
     out.min_bend_radius_limit = *cc.min_bend_radius;
-    out.notes.push_back("bend radius limit " + Metres(*cc.min_bend_radius) + " (" +
+    out.notes.push_back("bend radius limit " + Millimetres(*cc.min_bend_radius) + " (" +
                         cc.min_bend_radius_source + ")");
   }
 
@@ -161,8 +162,8 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     sp.sliding = e.sliding;
     if (e.s) {
       if (*e.s > length) {
-        throw InvalidInput("harness.json support at s=" + Metres(*e.s) +
-                           " lies beyond the cable (" + Metres(length) + ")");
+        throw InvalidInput("harness.json support at s=" + Millimetres(*e.s) +
+                           " lies beyond the cable (" + Millimetres(length) + ")");
       }
       sp.s = *e.s;
       sp.position = RoutePoint(route, sp.s);

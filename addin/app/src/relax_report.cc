@@ -1,7 +1,9 @@
 #include "cablefit/app/relax_report.h"
 
 #include <cctype>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ctime>
 #include <filesystem>
 #include <mutex>
@@ -12,6 +14,7 @@
 #include "cablefit/formats/deviation_views.h"
 #include "cablefit/formats/png_file.h"
 #include "cablefit/app/provenance.h"
+#include "cablefit/app/relax_summary.h"
 #include "cablefit/app/report_html.h"
 
 namespace cablefit::addin {
@@ -83,32 +86,100 @@ Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only =
   return scene;
 }
 
+// A material source as the table shows it: a file by its name only (the full path is in the
+// cell's tooltip and the JSON), anything else as it is.
+std::string MaterialCell(const CableSetup& setup) {
+  if (setup.material_defaulted) return "default estimate";
+  const std::filesystem::path p(setup.material_source);
+  if (p.has_parent_path() && p.has_extension() && p.extension().string().size() <= 5)
+    return "<span title=\"" + HtmlEscape(setup.material_source) + "\">" +
+           HtmlEscape(p.filename().string()) + "</span>";
+  return HtmlEscape(setup.material_source);
+}
+
+// A sortable numeric cell: the script sorts by data-value, the reader sees `text`.
+std::string NumberCell(double value, const std::string& text) {
+  std::ostringstream h;
+  h << "<td class=\"num\"";
+  if (std::isfinite(value)) h << " data-value=\"" << value << "\"";
+  h << ">" << text << "</td>";
+  return h.str();
+}
+
+// How many supports, and what each one carries: the force (and moment, for a clamp) it exerts
+// on the cable, which is what a clip or connector has to hold.
+std::string SupportsText(const CableRelaxation& r) {
+  std::string text = std::to_string(r.setup.spec.supports.size());
+  const auto& reactions = r.result.solution.reactions;
+  for (size_t k = 0; k < r.setup.spec.supports.size() && k < reactions.size(); ++k) {
+    text += "<br><small>" + std::string(ToString(r.setup.spec.supports[k].kind)) + " " +
+            FormatNumber(reactions[k].force.norm()) + " N";
+    if (r.setup.spec.supports[k].kind == SupportKind::kClamp)
+      text += ", " + FormatNumber(reactions[k].moment.norm()) + " N m";
+    text += "</small>";
+  }
+  return text;
+}
+
+// A name that may break after '_', '-' and '#' (long input and cable names would otherwise
+// widen the table past the window).
+std::string BreakableName(const std::string& name) {
+  std::string out;
+  for (const char c : name) {
+    out += HtmlEscape(std::string(1, c));  // per character: an entity is never cut
+    if (c == '_' || c == '-' || c == '#') out += "<wbr>";
+  }
+  return out;
+}
+
 std::string Row(const std::string& file, const std::string& cable, const CableRelaxation& r) {
   std::ostringstream h;
   const bool ok = r.result.converged && r.result.solution.summary.stable;
-  h << "<tr><td>" << HtmlEscape(file) << "</td><td>" << HtmlEscape(cable) << "</td><td>"
-    << FormatLength(r.setup.spec.length) << "</td><td>"
-    << FormatLength(r.setup.spec.material.diameter)
-    << (r.setup.diameter_defaulted ? " (assumed)" : "") << "</td><td>"
-    << (r.setup.material_defaulted ? "default estimate" : HtmlEscape(r.setup.material_source))
-    << "</td><td>" << r.setup.spec.supports.size() << "</td><td data-v=\"" << r.max_deviation
-    << "\">" << FormatLength(r.max_deviation) << " at s = " << FormatLength(r.max_deviation_s);
+  double least_slack = std::numeric_limits<double>::infinity();
+  for (const CableRelaxation::Stretch& st : r.stretches) least_slack = std::min(least_slack, st.slack);
+  const double relaxed_length = r.relaxed.size() > 1 ? r.relaxed.ChordLength() : r.setup.spec.length;
+  // Twelve columns fit a 1400 px window: related figures share a cell, the second one small.
+  h << "<tr><td>" << BreakableName(file) << "</td><td>" << BreakableName(cable) << "</td>"
+    << NumberCell(r.setup.drawn_length, FormatLength(r.setup.drawn_length) +
+                                            "<br><small>relaxed " + FormatLength(relaxed_length) +
+                                            "</small>")
+    << NumberCell(least_slack, std::isfinite(least_slack)
+                                   ? FormatNumber(100 * least_slack) + " %" +
+                                         (r.taut ? " <span class=\"badge fail\">taut</span>" : "")
+                                   : "\u2013")
+    << NumberCell(r.max_tension, std::isfinite(r.max_tension) ? FormatNumber(r.max_tension) + " N"
+                                                             : "\u2013")
+    << NumberCell(r.setup.spec.material.diameter,
+                  FormatLength(r.setup.spec.material.diameter) +
+                      (r.setup.diameter_defaulted ? " (assumed)" : "") + "<br><small>" +
+                      MaterialCell(r.setup) + "</small>")
+    << NumberCell(static_cast<double>(r.setup.spec.supports.size()), SupportsText(r));
+  std::string deviation = FormatLength(r.max_deviation) + "<br><small>at s = " +
+                          FormatLength(r.max_deviation_s) + "</small>";
   if (r.springback_max && r.sag_max)
-    h << "<br><small>springback " << FormatLength(*r.springback_max) << ", sag "
-      << FormatLength(*r.sag_max) << "</small>";
-  h << "</td><td data-v=\"" << r.rms_deviation << "\">" << FormatLength(r.rms_deviation)
-    << "</td><td data-v=\"" << r.min_bend_radius << "\">"
-    << (std::isfinite(r.min_bend_radius) ? FormatLength(r.min_bend_radius) : "straight")
-    << (r.bend_flag ? " <span class=\"badge fail\">&lt; " + FormatLength(r.bend_limit) + "</span>"
-                    : "")
-    << "</td><td>" << FormatNumber(r.result.solution.twist_angle * 180 / M_PI) << "°</td><td>"
-    << "<span class=\"badge " << (ok ? "ok" : "fail") << "\">"
+    deviation += "<br><small>springback " + FormatLength(*r.springback_max) + ", sag " +
+                 FormatLength(*r.sag_max) + "</small>";
+  h << NumberCell(r.max_deviation, deviation)
+    << NumberCell(r.rms_deviation, FormatLength(r.rms_deviation));
+  std::string bend = std::isfinite(r.min_bend_radius) ? FormatLength(r.min_bend_radius) : "straight";
+  bend += "<br><small>limit " + FormatLength(r.bend_limit) + "</small>";
+  if (r.bend_flag) bend += " <span class=\"badge fail\">too tight</span>";
+  h << NumberCell(r.min_bend_radius, bend)
+    << "<td><span class=\"badge " << (ok ? "ok" : "fail") << "\">"
     << (r.result.converged ? (r.result.solution.summary.stable ? "stable" : "unstable")
                            : "not converged")
-    << "</span></td><td>";
+    << "</span>"
+    << (std::isfinite(r.result.solution.twist_angle)
+            ? "<br><small>twist " + FormatNumber(r.result.solution.twist_angle * 180 / M_PI) +
+                  "\u00b0</small>"
+            : std::string())
+    << "</td>"
+    << "<td class=\"notes\"><small>";
   if (!r.setup.junction.empty()) h << "junction " << HtmlEscape(r.setup.junction) << "<br>";
-  for (const std::string& n : r.setup.notes) h << HtmlEscape(n) << "<br>";
-  h << "</td></tr>\n";
+  // The default-material note is said once above the table.
+  for (const std::string& n : r.setup.notes)
+    if (n != kDefaultMaterialNote) h << HtmlEscape(n) << "<br>";
+  h << "</small></td></tr>\n";
   return h.str();
 }
 
@@ -161,46 +232,31 @@ std::vector<std::string> WriteCloseUpPictures(const std::string& dir, const Rela
 namespace {
 
 // What an engineer asks first: how many cables, how many failed or need a look, and the worst
-// deviation; then which tool made the page and when (the JSON leaves the date out on purpose).
-std::string VerdictSection(const std::vector<RelaxedFile>& files, double seconds) {
-  int cables = 0, failed = 0, unstable = 0, bend = 0, taut = 0, inputs_failed = 0;
-  double worst = -1.0;
-  std::string worst_at;
-  for (const RelaxedFile& f : files) {
-    if (!f.error.empty() && f.cables.empty()) ++inputs_failed;
-    for (size_t i = 0; i < f.cables.size(); ++i) {
-      ++cables;
-      const auto& r = f.cables[i];
-      if (!r || !r->result.converged) {
-        ++failed;
-        continue;
-      }
-      if (!r->result.solution.summary.stable) ++unstable;
-      if (r->bend_flag) ++bend;
-      if (r->taut) ++taut;
-      if (r->max_deviation > worst) {
-        worst = r->max_deviation;
-        worst_at = f.drawing.cables[i].name + " (" + f.stem + ")";
-      }
-    }
-  }
+// deviation and where; then which tool made the page, when, from which files.
+std::string VerdictSection(const std::vector<RelaxedFile>& files, const HarnessConfig& config,
+                           double seconds) {
+  const RelaxCounts c = CountRelaxation(files);
   std::ostringstream h;
-  h << "<section class=\"card\"><h2>Verdict</h2><p><b>" << cables << " cable"
-    << (cables == 1 ? "" : "s") << "</b> from " << files.size() << " input"
-    << (files.size() == 1 ? "" : "s") << ": " << cables - failed << " relaxed, "
-    << "<span class=\"badge " << (failed ? "fail" : "ok") << "\">" << failed << " failed</span>, "
-    << bend << " below the bend-radius limit, " << taut << " taut, " << unstable << " unstable";
-  if (inputs_failed) h << "; " << inputs_failed << " input(s) could not be read";
+  h << "<section class=\"card\"><h2>Verdict</h2><p><b>" << c.cables << " cable"
+    << (c.cables == 1 ? "" : "s") << "</b> from " << files.size() << " input"
+    << (files.size() == 1 ? "" : "s") << ": " << c.relaxed << " relaxed, "
+    << "<span class=\"badge " << (c.failed ? "fail" : "ok") << "\">" << c.failed
+    << " failed</span>, "
+    << "<span class=\"badge " << (c.bend ? "fail" : "ok") << "\">" << c.bend
+    << " below the bend-radius limit</span>, "
+    << "<span class=\"badge " << (c.taut ? "fail" : "ok") << "\">" << c.taut << " taut</span>, "
+    << c.unstable << " unstable";
+  if (c.inputs_failed) h << "; " << c.inputs_failed << " input(s) failed";
   h << ".";
-  if (worst >= 0)
-    h << " Largest deviation from the drawing: <b>" << FormatLength(worst) << "</b>, "
-      << HtmlEscape(worst_at) << ".";
-  char date[32] = "";
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  if (gmtime_r(&now, &utc)) std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &utc);
-  h << "</p><p><small>" << HtmlEscape(ToolVersion()) << ", " << date << ", "
-    << FormatNumber(seconds) << " s.</small></p></section>\n";
+  if (c.worst >= 0)
+    h << " Largest deviation from the drawing: <b>" << FormatLength(c.worst) << "</b>, "
+      << HtmlEscape(c.worst_cable) << " at s = " << FormatLength(c.worst_s) << ".";
+  h << "</p>";
+  std::vector<std::pair<std::string, std::string>> sources;
+  for (const RelaxedFile& f : files) sources.emplace_back("input", f.input);
+  sources.emplace_back("config", config.path);
+  h << ProvenanceHtml(ProvenanceJson(sources)) << "</section>\n";
+  (void)seconds;
   return h.str();
 }
 
@@ -214,21 +270,39 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
         if (c && c->setup.min_bend_radius_limit > 0) return true;
     return false;
   };
+  bool any_default_material = false;
+  for (const RelaxedFile& f : files)
+    for (const auto& c : f.cables) any_default_material = any_default_material || (c && c->setup.material_defaulted);
   std::ostringstream h;
   h << PageHead("cablefit relax");
-  h << VerdictSection(files, seconds);
+  h << "<header class=\"top\"><h1>cablefit relax</h1><div class=\"sub\">" << files.size()
+    << " input" << (files.size() == 1 ? "" : "s") << " &middot; " << HtmlEscape(UtcNow())
+    << " &middot; " << FormatSeconds(seconds) << " wall time"
+    << (config.path.empty() ? "" : " &middot; config " + HtmlEscape(std::filesystem::path(config.path).filename().string()))
+    << "</div></header>\n<main>\n";
+  h << VerdictSection(files, config, seconds);
   h << "<section class=\"card\"><h2>Relaxed cables</h2>\n<p>Each cable is solved as a Kirchhoff "
        "rod under gravity from its drawn shape (nearest equilibrium), ends clamped at their drawn "
        "pose unless harness.json says otherwise. Deviation = distance of the relaxed centreline "
-       "to the drawn route. Bend radius flagged below "
+       "to the drawn route; s = arc length from the cable's start. Slack = (length - support "
+       "distance) / support distance of the tightest stretch between two supports. All lengths "
+       "in mm. Bend radius flagged below "
     << FormatNumber(config.min_bend_radius_factor) << " diameters"
     << (any_own_bend_limit(files) ? ", or below the cable's own limit where its data give one (a KBL "
                                  "file's wire Bend_radius)"
                                : "")
-    << ".</p>\n"
-    << "<table class=\"sortable\"><thead><tr><th>input</th><th>cable</th><th>length</th>"
-       "<th>diameter</th><th>material</th><th>supports</th><th>max deviation</th><th>rms</th>"
-       "<th>min bend radius</th><th>twist</th><th>solver</th><th>notes</th></tr></thead><tbody>\n";
+    << ".</p>\n";
+  if (any_default_material)
+    h << "<p><b>Default material:</b> cables marked \"default estimate\" have no material in "
+      << (config.path.empty() ? "a harness.json (give one with --config)" : "the harness.json")
+      << "; " << HtmlEscape(kDefaultMaterialNote) << ".</p>\n";
+  h << "<div class=\"table-wrap\"><table class=\"sortable dense\"><thead><tr><th>input</th>"
+       "<th>cable</th><th class=\"num\">length<br>drawn, relaxed</th>"
+       "<th class=\"num\">slack</th><th class=\"num\">max<br>tension</th>"
+       "<th class=\"num\">diameter<br>material</th><th class=\"num\">supports<br>reactions</th>"
+       "<th class=\"num\">max deviation<br>where</th><th class=\"num\">rms</th>"
+       "<th class=\"num\">min bend radius<br>limit</th><th>solver</th>"
+       "<th>notes</th></tr></thead><tbody>\n";
   std::vector<std::string> failures;
   for (const RelaxedFile& f : files) {
     if (!f.error.empty()) failures.push_back(f.input + ": " + f.error);
@@ -242,7 +316,7 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
       }
     }
   }
-  h << "</tbody></table></section>\n";
+  h << "</tbody></table></div></section>\n";
   if (!failures.empty()) {
     h << "<section class=\"card\"><h2>Failures</h2><ul class=\"notes\">";
     for (const std::string& e : failures) h << "<li>" << HtmlEscape(e) << "</li>";
@@ -264,7 +338,8 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
     }
     h << "</section>\n";
   }
-  h << PageTail("cablefit relax, " + FormatSeconds(seconds));
+  h << "</main>\n";
+  h << PageTail(HtmlEscape(ToolVersion()) + " &middot; relax &middot; " + FormatSeconds(seconds));
   WriteFileAtomically(path, h.str());
 }
 

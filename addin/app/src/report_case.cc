@@ -5,6 +5,7 @@
 
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/app/diagnose_output.h"
+#include "cablefit/app/provenance.h"
 #include "cablefit/app/report_html.h"
 
 namespace cablefit::addin {
@@ -39,8 +40,17 @@ std::string ParametersTable(const DiagnosedCase& d) {
   };
   for (const auto& [name, value] : d.parameters) {
     const std::string unit = unit_of(name);
-    h << "<tr><td><code>" << HtmlEscape(name) << "</code></td><td class=\"num\">"
-      << HtmlEscape(FormatParameter(value, unit)) << "</td><td>" << HtmlEscape(unit)
+    // The unit has its own column: the value cell carries only the number (and degrees for an
+    // angle, which people read better than radians).
+    std::string text = FormatNumber(value, 4);
+    if (unit == "rad") {
+      const std::string with_degrees = FormatParameter(value, unit);
+      text += with_degrees.substr(with_degrees.find(" rad") + 4);
+    }
+    const std::string meaning = ParameterMeaning(name);
+    h << "<tr><td><code>" << HtmlEscape(name) << "</code>"
+      << (meaning.empty() ? "" : "<br><small>" + HtmlEscape(meaning) + "</small>")
+      << "</td><td class=\"num\">" << HtmlEscape(text) << "</td><td>" << HtmlEscape(unit)
       << "</td></tr>\n";
   }
   for (const auto& [name, v] : d.vectors) {
@@ -79,7 +89,9 @@ std::string CandidatesTable(const DiagnosedCase& d) {
   for (std::size_t i = 0; i < d.candidates.size(); ++i) {
     const auto& [effect, score] = d.candidates[i];
     h << "<tr" << (i == 0 ? " class=\"best\"" : "") << "><td>" << HtmlEscape(effect)
-      << "</td><td class=\"num\" data-value=\"" << score << "\">" << FormatNumber(score, 3)
+      // In per cent, as the verdict's confidence (the chosen effect's score) is given.
+      << "</td><td class=\"num\" data-value=\"" << score << "\">" << FormatNumber(100.0 * score, 3)
+      << " %"
       << "</td><td data-value=\"" << score << "\"><div class=\"bar\"><span style=\"width:"
       << std::max(0.0, std::min(100.0, 100.0 * score)) << "%\"></span></div></td>";
     const EffectCandidate* c = shape[i];
@@ -102,7 +114,8 @@ std::string CandidatesTable(const DiagnosedCase& d) {
     if (has_bic) {
       if (c)
         h << "<td>" << (c->clamp ? std::to_string(*c->clamp) : "\u2013") << "</td><td>"
-          << (c->interval ? FormatInterval(*c->interval) + " m" : "\u2013") << "</td><td>"
+          << (c->interval ? FormatLength(c->interval->first) + " \u2013 " + FormatLength(c->interval->second)
+                        : "\u2013") << "</td><td>"
           << (c->converged ? "converged" : "iteration limit") << "</td>";
       else
         h << "<td></td><td></td><td></td>";
@@ -145,14 +158,21 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
   h << "<section class=\"card\"><h2>Verdict</h2><div class=\"facts\">\n"
     << Fact("effect", HtmlEscape(d.effect))
     << Fact("confidence", FormatNumber(100.0 * d.confidence, 3) + " %")
-    << Fact("interval", d.interval ? FormatInterval(*d.interval) + " m" : "\u2013")
-    << Fact("clamp", d.clamp ? std::to_string(*d.clamp) : "\u2013")
+    ;
+  // A force test has no place along the cable and no clamp to blame: those facts are shape's.
+  if (d.kind == CaseKind::kShape) {
+    h << Fact("interval", d.interval ? HtmlEscape(FormatLength(d.interval->first) + " \u2013 " +
+                                                  FormatLength(d.interval->second))
+                                     : "\u2013")
+      << Fact("clamp", d.clamp ? std::to_string(*d.clamp) : "\u2013");
+  }
+  h
     << Fact("baseline max / rms", HtmlEscape(FormatDeviation(d.baseline.max, d.deviation_unit) +
                                              " / " +
                                              FormatDeviation(d.baseline.rms, d.deviation_unit)))
     << Fact("fitted max / rms", HtmlEscape(FormatDeviation(d.fitted.max, d.deviation_unit) + " / " +
                                            FormatDeviation(d.fitted.rms, d.deviation_unit)))
-    << Fact("run time", FormatSeconds(d.seconds));
+    << Fact("diagnosis time", FormatSeconds(d.seconds) + " (without writing the outputs)");
   if (d.kind == CaseKind::kShape) {
     h << Fact("fitted to", HtmlEscape(d.observation_source) + " (" +
                                std::to_string(d.observation.points.cols()) + " points)")
@@ -197,7 +217,8 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     << ParametersTable(d) << "</section>\n"
     << "<section class=\"card\"><h2>Candidates</h2>\n" << CandidatesTable(d)
     << "<p style=\"color:var(--muted);font-size:13px\">Score: posterior weight of each effect "
-       "from the Bayesian information criterion (\u0394BIC: difference to the best; above 10 is very "
+       "in per cent (the verdict's confidence is the chosen effect's, capped at 10 % when nothing "
+       "explains the recording) from the Bayesian information criterion (\u0394BIC: difference to the best; above 10 is very "
        "strong evidence against); the best is listed first.</p></section></div>\n";
 
   h << "<section class=\"card\"><h2>Nominal set-up</h2><div class=\"facts\">\n"
@@ -211,7 +232,14 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     << Fact("supports", std::to_string(rc.nominal.supports.size()))
     << "</div></section>\n";
 
-  h << "<section class=\"card\"><h2>Files</h2>\n" << FilesList(d, pictures) << "</section>\n";
+  h << "<section class=\"card\"><h2>Files</h2>\n" << FilesList(d, pictures);
+  {
+    // The same facts as diagnosis.json's provenance: what this page was made from, by what.
+    std::vector<std::pair<std::string, std::string>> sources = {{"case", d.recording.case_file}};
+    for (const RecordingRef& r : d.recording.recordings) sources.emplace_back(ToString(r.kind), r.path);
+    h << ProvenanceHtml(ProvenanceJson(sources));
+  }
+  h << "</section>\n";
   h << "</main>\n";
   h << PageTail("cablefit diagnose \u00b7 " + HtmlEscape(rc.name) + " \u00b7 " +
                 FormatSeconds(d.seconds));

@@ -35,10 +35,16 @@ std::string FormatNumber(double value, int digits) {
 
 std::string FormatLength(double metres) {
   if (!std::isfinite(metres)) return "\u2013";
-  const double a = std::abs(metres);
-  if (a >= 1.0) return FormatNumber(metres) + " m";
-  if (a >= 1e-3 || a == 0.0) return FormatNumber(metres * 1e3) + " mm";
-  return FormatNumber(metres * 1e6) + " \u00b5m";
+  // Always millimetres, as a harness drawing is dimensioned: a column of lengths then compares
+  // at a glance. Whole millimetres from 100 mm on, three significant digits below.
+  const double mm = metres * 1e3;
+  const double a = std::abs(mm);
+  char buf[64];
+  if (a >= 100.0) {
+    std::snprintf(buf, sizeof buf, "%.0f mm", mm);
+    return buf;
+  }
+  return FormatNumber(mm) + " mm";
 }
 
 std::string FormatDeviation(double value, const std::string& unit) {
@@ -84,6 +90,22 @@ std::string ParameterUnit(const std::string& name, const std::string& x_unit,
   if (name == "element_count") return "\u2013";
   if (name == "loop_area" || name == "recorded_loop_area")
     return y_unit.empty() ? "" : y_unit + " \u00b7 " + x_unit;
+  return "";
+}
+
+std::string ParameterMeaning(const std::string& name) {
+  // The numbered parameters of a hysteresis fit: Iwan elements (a spring in series with a
+  // slider), each sticking up to its slip force.
+  if (name.rfind("f_slip_", 0) == 0)
+    return "slip force of hysteresis element " + name.substr(7) + " (slider in series with k_" +
+           name.substr(7) + ")";
+  if (name.rfind("k_", 0) == 0) return "stiffness of hysteresis element " + name.substr(2);
+  if (name == "element_count") return "hysteresis elements fitted";
+  if (name == "slip_force_total") return "sum of the elements' slip forces";
+  if (name == "sensor_offset") return "constant offset of the recorded force or moment";
+  if (name == "noise_sigma") return "scatter of the recording about the fitted curve";
+  if (name == "loop_area") return "area of the fitted hysteresis loop";
+  if (name == "recorded_loop_area") return "area of the recorded hysteresis loop";
   return "";
 }
 
@@ -153,6 +175,13 @@ ul.notes { margin:0; padding-left:20px; color:var(--warn); }
 a { color:var(--accent); }
 footer { color:var(--muted); font-size:12px; text-align:center; padding:10px 0 30px; }
 .error { color:var(--fail); }
+p.provenance { color:var(--muted); font-size:12px; overflow-wrap:anywhere; margin:8px 0 0; }
+.table-wrap { overflow-x:auto; }
+td small { color:var(--muted); }
+td.notes { min-width:120px; overflow-wrap:anywhere; }
+table.dense td:first-child { white-space:normal; }
+table.dense th, table.dense td { padding:6px 6px; font-size:14px; }
+table.dense td.num small { white-space:normal; }
 code { font-family:"DejaVu Sans Mono", Menlo, Consolas, monospace; font-size:13px; }
 )css";
 

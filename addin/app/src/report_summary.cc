@@ -4,11 +4,13 @@
 #include <sstream>
 
 #include "cablefit/formats/atomic_file.h"
+#include "cablefit/app/provenance.h"
 #include "cablefit/app/report_html.h"
 
 namespace cablefit::addin {
 
-std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_seconds, int jobs) {
+std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_seconds, int jobs,
+                           const nlohmann::json& provenance) {
   int failed = 0;
   std::map<std::string, int> by_effect;
   for (const SummaryRow& r : rows) {
@@ -21,6 +23,8 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
     << rows.size() << " case(s), " << rows.size() - static_cast<std::size_t>(failed)
     << " diagnosed, " << failed << " failed \u00b7 " << FormatSeconds(total_seconds)
     << " wall time \u00b7 " << jobs << " job(s)</div></header>\n<main>\n";
+  if (provenance.is_object())
+    h << "<section class=\"card\"><h2>Run</h2>" << ProvenanceHtml(provenance) << "</section>\n";
 
   h << "<section class=\"card\"><h2>Effects found</h2><div class=\"facts\">\n";
   for (const auto& [effect, count] : by_effect)
@@ -33,8 +37,10 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
 
   h << "<section class=\"card\"><h2>Cases</h2>\n<table class=\"sortable\"><thead><tr>"
        "<th>case</th><th>kind</th><th>effect</th><th class=\"num\">confidence</th>"
-       "<th>interval [m]</th><th class=\"num\">clamp</th><th class=\"num\">baseline max</th>"
-       "<th class=\"num\">fitted max</th><th class=\"num\">time</th></tr></thead><tbody>\n";
+       "<th>interval</th><th class=\"num\">clamp</th>"
+       "<th class=\"num\">shape: baseline max</th><th class=\"num\">shape: fitted max</th>"
+       "<th class=\"num\">force: baseline max</th><th class=\"num\">force: fitted max</th>"
+       "<th class=\"num\">time</th></tr></thead><tbody>\n";
   for (const SummaryRow& r : rows) {
     h << "<tr><td>";
     if (!r.link.empty())
@@ -43,7 +49,7 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
       h << HtmlEscape(r.name);
     h << "</td><td>" << HtmlEscape(r.kind) << "</td>";
     if (!r.error.empty()) {
-      h << "<td><span class=\"badge fail\">failed</span></td><td colspan=\"5\" class=\"error\">"
+      h << "<td><span class=\"badge fail\">failed</span></td><td colspan=\"7\" class=\"error\">"
         << HtmlEscape(r.error) << "</td><td class=\"num\" data-value=\"" << r.seconds << "\">"
         << FormatSeconds(r.seconds) << "</td></tr>\n";
       continue;
@@ -51,13 +57,22 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
     h << "<td><span class=\"badge " << EffectBadge(r.effect) << "\">" << HtmlEscape(r.effect)
       << "</span></td><td class=\"num\" data-value=\"" << r.confidence << "\">"
       << FormatNumber(100.0 * r.confidence, 3) << " %</td><td>"
-      << (r.interval ? FormatInterval(*r.interval) : "\u2013")
-      << "</td><td class=\"num\" data-value=\"" << (r.clamp ? *r.clamp : -1) << "\">"
-      << (r.clamp ? std::to_string(*r.clamp) : "\u2013") << "</td><td class=\"num\" data-value=\""
-      << r.baseline_max << "\">" << HtmlEscape(FormatDeviation(r.baseline_max, r.deviation_unit))
+      // Force cases have no place along the cable: their interval and clamp are not shown.
+      << (r.interval && r.kind != "force"
+              ? FormatLength(r.interval->first) + " \u2013 " + FormatLength(r.interval->second)
+              : "\u2013")
+      << "</td><td class=\"num\" data-value=\"" << (r.clamp && r.kind != "force" ? *r.clamp : -1)
+      << "\">" << (r.clamp && r.kind != "force" ? std::to_string(*r.clamp) : "\u2013") << "</td>";
+    // Lengths and forces in columns of their own, so that a column sorts one quantity.
+    const bool force = r.kind == "force";
+    const std::string empty = "<td class=\"num\">\u2013</td><td class=\"num\">\u2013</td>";
+    if (force) h << empty;
+    h << "<td class=\"num\" data-value=\"" << r.baseline_max << "\">"
+      << HtmlEscape(FormatDeviation(r.baseline_max, r.deviation_unit))
       << "</td><td class=\"num\" data-value=\"" << r.fitted_max << "\">"
-      << HtmlEscape(FormatDeviation(r.fitted_max, r.deviation_unit))
-      << "</td><td class=\"num\" data-value=\"" << r.seconds << "\">" << FormatSeconds(r.seconds)
+      << HtmlEscape(FormatDeviation(r.fitted_max, r.deviation_unit)) << "</td>";
+    if (!force) h << empty;
+    h << "<td class=\"num\" data-value=\"" << r.seconds << "\">" << FormatSeconds(r.seconds)
       << "</td></tr>\n";
   }
   h << "</tbody></table>\n<p style=\"color:var(--muted);font-size:13px\">Click a column header "
@@ -68,8 +83,41 @@ std::string RunSummaryHtml(const std::vector<SummaryRow>& rows, double total_sec
 }
 
 void WriteRunSummary(const std::string& path, const std::vector<SummaryRow>& rows,
-                     double total_seconds, int jobs) {
-  WriteFileAtomically(path, RunSummaryHtml(rows, total_seconds, jobs));
+                     double total_seconds, int jobs, const nlohmann::json& provenance) {
+  WriteFileAtomically(path, RunSummaryHtml(rows, total_seconds, jobs, provenance));
+}
+
+nlohmann::json DiagnoseSummaryJson(const std::vector<SummaryRow>& rows,
+                                   const std::vector<std::string>& failures, double total_seconds,
+                                   const nlohmann::json& provenance) {
+  int diagnosed = 0;
+  nlohmann::json cases = nlohmann::json::array();
+  for (const SummaryRow& r : rows) {
+    nlohmann::json c = {{"name", r.name}, {"seconds", r.seconds}};
+    if (r.error.empty()) {
+      ++diagnosed;
+      c["status"] = "diagnosed";
+      c["kind"] = r.kind;
+      c["effect"] = r.effect;
+      c["confidence"] = r.confidence;
+      c["report"] = r.link;
+    } else {
+      c["status"] = "failed";
+      c["error"] = r.error;
+    }
+    cases.push_back(std::move(c));
+  }
+  return {{"format", "cablefit-diagnose-summary/1"},
+          {"command", "diagnose"},
+          {"counts",
+           {{"cases", rows.size()},
+            {"diagnosed", diagnosed},
+            {"failed", static_cast<int>(rows.size()) - diagnosed},
+            {"failures", failures.size()}}},
+          {"cases", std::move(cases)},
+          {"failures", failures},
+          {"seconds", total_seconds},
+          {"provenance", provenance}};
 }
 
 }  // namespace cablefit::addin

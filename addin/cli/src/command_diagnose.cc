@@ -25,7 +25,10 @@
 #include "cablefit/app/report_case.h"
 #include "cablefit/app/report_html.h"
 #include "cablefit/app/report_summary.h"
+#include "run_summary.h"
 #include "terminal_text.h"
+#include "cablefit/app/provenance.h"
+#include "cablefit/formats/json_util.h"
 
 namespace cablefit::addin {
 namespace {
@@ -33,8 +36,10 @@ namespace {
 struct DiagnoseArgs {
   std::vector<std::string> paths;
   std::string out_dir;
-  int jobs = 1;
+  int jobs = 0;  // one per core, as relax; a case left alone runs its fits on the idle cores
   double timeout = 0.0;  // [s] per case, 0 = no limit
+  bool quiet = false;        // no per-case lines, no progress bar
+  std::string summary_json;  // --summary-json FILE, empty = none
 };
 
 /// Output folders, one per case, unique after sanitising ("left cable" and "left_cable" would
@@ -116,10 +121,14 @@ int RunDiagnose(const DiagnoseArgs& a) {
   const std::filesystem::path& out_dir = output.path();
   const std::vector<std::string> folders = CaseFolders(list);
   for (const std::string& folder : folders) output.CheckFolder(out_dir / folder);
+  output.CheckFile(out_dir / "report.html");
+  std::vector<std::string> all_inputs = a.paths;
+  all_inputs.insert(all_inputs.end(), list.files.begin(), list.files.end());
+  if (!a.summary_json.empty()) CheckSummaryJsonPath(a.summary_json, all_inputs);
   std::vector<CaseOutcome> outcomes(static_cast<std::size_t>(n));
   std::mutex failures_mutex;
   {
-    ProgressBar bar(n);
+    ProgressBar bar(n, a.quiet ? nullptr : stderr);
     const auto errors = RunBatch(n, jobs, [&](int i) {
       const std::string& file = list.files[static_cast<std::size_t>(i)];
       CaseOutcome& o = outcomes[static_cast<std::size_t>(i)];
@@ -143,9 +152,10 @@ int RunDiagnose(const DiagnoseArgs& a) {
                            d.deviation_unit, seconds, ""};
         o.ok = true;
         char line[512];
-        std::snprintf(line, sizeof line, "%s: %s, confidence %.2f, %.1f s", d.recording.name.c_str(),
-                      d.effect.c_str(), d.confidence, seconds);
-        bar.PrintLine(stdout, line);
+        // Confidence in per cent, as the reports give it.
+        std::snprintf(line, sizeof line, "%s: %s, confidence %.0f %%, %s", d.recording.name.c_str(),
+                      d.effect.c_str(), 100.0 * d.confidence, FormatSeconds(seconds).c_str());
+        if (!a.quiet) bar.PrintLine(stdout, line);
       } catch (...) {
         o.row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         o.row.error = ErrorLine(std::current_exception(), file);
@@ -166,18 +176,31 @@ int RunDiagnose(const DiagnoseArgs& a) {
     diagnosed += o.ok ? 1 : 0;
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::vector<std::pair<std::string, std::string>> sources;
+  for (const std::string& f : list.files) sources.emplace_back("case", f);
+  const nlohmann::json provenance = ProvenanceJson(sources);
+  bool summary_written = true;
   try {
-    WriteRunSummary((out_dir / "report.html").string(), rows, total, jobs);
+    WriteRunSummary((out_dir / "report.html").string(), rows, total, jobs, provenance);
   } catch (const std::exception& e) {
+    summary_written = false;
     failures.push_back(e.what());
     std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(e.what()).c_str());
   }
-  std::printf("%d of %d case(s) diagnosed in %s; summary: %s\n", diagnosed, n,
-              FormatSeconds(total).c_str(), TerminalSafe((out_dir / "report.html").string()).c_str());
-  if (!failures.empty()) {
-    std::fprintf(stderr, "cablefit: %zu input(s) failed:\n", failures.size());
-    for (const std::string& f : failures) std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(f).c_str());
+  if (!a.summary_json.empty()) {
+    try {
+      json::WriteJsonFile(a.summary_json, DiagnoseSummaryJson(rows, failures, total, provenance));
+    } catch (const std::exception& e) {
+      failures.push_back(a.summary_json + ": " + OneLine(e.what()));
+      std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(failures.back()).c_str());
+    }
   }
+  // Names the summary page only when it was written.
+  std::printf("diagnose: %d of %d case(s) diagnosed, %d failed; %s%s%s\n", diagnosed, n,
+              n - diagnosed, FormatSeconds(total).c_str(), summary_written ? "; summary: " : "",
+              summary_written ? TerminalSafe((out_dir / "report.html").string()).c_str() : "");
+  std::fflush(stdout);
+  PrintFailureList("diagnose", failures);
   if (diagnosed == 0) return kExitUsage;
   return failures.empty() ? kExitOk : kExitSomeFailed;
 }
@@ -201,6 +224,12 @@ void RegisterDiagnoseCommand(CLI::App& app, int* exit_code) {
                   "seconds one case may take; a case that takes longer is reported as failed "
                   "and the others go on (0 = no limit)")
       ->check(TimeoutSeconds());
+  cmd->add_flag("--quiet", args->quiet,
+                "no per-case lines or progress bar; the final summary line and errors are still "
+                "printed");
+  cmd->add_option("--summary-json", args->summary_json,
+                  "also write the run summary (per case: status, effect, confidence, error; "
+                  "counts, seconds, provenance) as JSON to this file");
   cmd->callback([args, exit_code] { *exit_code = RunDiagnose(*args); });
 }
 

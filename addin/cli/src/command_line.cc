@@ -51,6 +51,7 @@ std::string HelpCommand(CLI::App& app) {
 }  // namespace
 
 int RunCommandLineWith(int argc, char** argv, std::initializer_list<RegisterCommand> commands) {
+  SetCommandLine(argc, argv);  // for the provenance of every output
   // Named here, not from argv[0], so that usage lines read "cablefit relax", wherever it lives.
   CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
                "does not look like the real one",

@@ -26,6 +26,8 @@
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
+#include "cablefit/app/relax_summary.h"
+#include "run_summary.h"
 #include "cablefit/formats/input_file.h"
 #include "terminal_text.h"
 
@@ -45,6 +47,8 @@ struct RelaxArgs {
   bool pictures = true;
   bool close_ups = false;
   double timeout = 0.0;  // [s] per cable (or group solved together), 0 = no limit
+  bool quiet = false;        // no per-cable or per-input lines, no notes, no progress bar
+  std::string summary_json;  // --summary-json FILE, empty = none
 };
 
 double Since(Clock::time_point t0) {
@@ -104,8 +108,8 @@ std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
     std::snprintf(bend, sizeof bend, "straight");
   } else if (r.bend_flag && r.setup.min_bend_radius_limit > 0) {
     // A cable's own limit (a KBL file's wires) is not the run's factor: say which and where.
-    std::snprintf(bend, sizeof bend, "%.1f mm (TOO TIGHT: the cable's limit %.1f mm, at s=%.3f m)",
-                  1e3 * r.min_bend_radius, 1e3 * r.bend_limit, r.min_bend_radius_s);
+    std::snprintf(bend, sizeof bend, "%.1f mm (TOO TIGHT: the cable's limit %.1f mm, at s=%.0f mm)",
+                  1e3 * r.min_bend_radius, 1e3 * r.bend_limit, 1e3 * r.min_bend_radius_s);
   } else {
     std::snprintf(bend, sizeof bend, "%.1f mm%s", 1e3 * r.min_bend_radius,
                   r.bend_flag ? " (TOO TIGHT)" : "");
@@ -120,10 +124,10 @@ std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
   if (std::isfinite(r.max_tension)) std::snprintf(tension, sizeof tension, "%.3g N", r.max_tension);
   char buf[640];
   std::snprintf(buf, sizeof buf,
-                "%s: %s: L=%.3f m, max deviation %.2f mm at s=%.3f m (rms %.2f mm), min bend "
+                "%s: %s: L=%.0f mm, max deviation %.2f mm at s=%.0f mm (rms %.2f mm), min bend "
                 "radius %s, max tension %s, %d supports, %s%s%s, %.1f ms",
-                f.stem.c_str(), r.setup.name.c_str(), r.setup.spec.length, 1e3 * r.max_deviation,
-                r.max_deviation_s, 1e3 * r.rms_deviation, bend, tension,
+                f.stem.c_str(), r.setup.name.c_str(), 1e3 * r.setup.spec.length,
+                1e3 * r.max_deviation, 1e3 * r.max_deviation_s, 1e3 * r.rms_deviation, bend, tension,
                 static_cast<int>(r.setup.spec.supports.size()),
                 r.result.solution.summary.stable ? "stable" : "UNSTABLE", taut,
                 r.setup.material_defaulted ? ", default material" : "", 1e3 * r.seconds);
@@ -150,13 +154,14 @@ int RunRelax(const RelaxArgs& a) {
   const OutputFolder output(a.out_dir, inputs);
   const fs::path& out = output.path();
   output.CheckFile(out / "report.html");
+  if (!a.summary_json.empty()) CheckSummaryJsonPath(a.summary_json, inputs);
   for (const std::string& stem : stems) {
     for (const char* suffix : {".step", ".json", "-deviation.png"}) output.CheckFile(out / (stem + suffix));
   }
   const int n = static_cast<int>(paths.size());
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
   std::mutex cad_mutex, failures_mutex;
-  ProgressBar bar(3 * n + 1);
+  ProgressBar bar(3 * n + 1, a.quiet ? nullptr : stderr);
   auto fail = [&](RelaxedFile& f, const std::string& problem) {
     std::lock_guard lock(failures_mutex);
     if (f.error.empty()) f.error = problem;
@@ -187,11 +192,11 @@ int RunRelax(const RelaxArgs& a) {
       ApplyCableSelection(config, &f.drawing);
       f.read_ok = true;
       for (const std::string& why : f.drawing.skipped)
-        bar.PrintLine(stderr, "cablefit: note: " + f.input + ": not taken as a cable: " + why);
+        if (!a.quiet) bar.PrintLine(stderr, "cablefit: note: " + f.input + ": not taken as a cable: " + why);
       for (const std::string& why : f.drawing.warnings)
         bar.PrintLine(stderr, "cablefit: warning: " + f.input + ": " + why);
       for (const std::string& note : f.notes)
-        bar.PrintLine(stderr, "cablefit: note: " + f.input + ": " + note);
+        if (!a.quiet) bar.PrintLine(stderr, "cablefit: note: " + f.input + ": " + note);
       f.cables.resize(f.drawing.cables.size());
       f.cable_errors.resize(f.drawing.cables.size());
     } catch (...) {
@@ -254,7 +259,7 @@ int RunRelax(const RelaxArgs& a) {
     }
     if (problem.empty()) {
       for (CableRelaxation& r : done) {
-        bar.PrintLine(stdout, CableLine(f, r));
+        if (!a.quiet) bar.PrintLine(stdout, CableLine(f, r));
         f.cables[static_cast<size_t>(r.setup.cable)] = std::move(r);
       }
     } else {
@@ -304,7 +309,7 @@ int RunRelax(const RelaxArgs& a) {
                     "JSON %.3f, picture %.3f",
                     f.stem.c_str(), f.drawing.cables.size(), f.drawing.solids.size(), f.times.read,
                     f.times.relax, f.times.step, f.times.json, f.times.picture);
-      bar.PrintLine(stdout, buf);
+      if (!a.quiet) bar.PrintLine(stdout, buf);
     } catch (const FileError& e) {
       // Names the output that could not be written: the input is not to blame.
       fail(f, std::string("its results could not be written: ") + e.what());
@@ -325,10 +330,21 @@ int RunRelax(const RelaxArgs& a) {
     }
   }
   bar.Finish(3 * n);
-  if (!failures.empty()) {
-    std::fprintf(stderr, "cablefit: relax: %zu failure(s):\n", failures.size());
-    for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", TerminalSafe(f).c_str());
+  if (!a.summary_json.empty()) {
+    try {
+      json::WriteJsonFile(a.summary_json, RelaxSummaryJson(files, failures, config.path, Since(start)));
+    } catch (const std::exception& e) {
+      failures.push_back(a.summary_json + ": " + OneLine(e.what()));
+      std::fprintf(stderr, "cablefit: %s\n", TerminalSafe(failures.back()).c_str());
+    }
   }
+  if (any_read) {
+    // The run in one line, last, where a user looks (also with --quiet: it is the result).
+    std::printf("%s; report: %s\n", RelaxSummaryLine(CountRelaxation(files), Since(start)).c_str(),
+                TerminalSafe((out / "report.html").string()).c_str());
+    std::fflush(stdout);
+  }
+  PrintFailureList("relax", failures);
   if (!any_read) {
     std::fprintf(stderr, "cablefit: relax: no input could be read\n");
     return kExitUsage;
@@ -367,6 +383,12 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
                          "skip the deviation pictures");
   cmd->add_flag("--close-ups", args->close_ups,
                 "also one picture per cable: <stem>-<cable>-deviation.png");
+  cmd->add_flag("--quiet", args->quiet,
+                "no per-cable lines, notes or progress bar; the final summary line, warnings and "
+                "errors are still printed");
+  cmd->add_option("--summary-json", args->summary_json,
+                  "also write the run summary (per input and cable: status, errors; counts, "
+                  "seconds, provenance) as JSON to this file");
   cmd->callback([args, exit_code] { *exit_code = RunRelax(*args); });
 }
 

@@ -9,6 +9,7 @@
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/app/solution_json.h"
+#include "cablefit/app/provenance.h"
 #include "output_folder.h"
 #include "terminal_text.h"
 
@@ -29,6 +30,16 @@ int RunSimulate(const SimulateArgs& a) {
   std::string why;
   if (!opt.IsValid(&why)) throw InvalidInput("--accuracy: " + why);
   const RecordingCase rc = ReadRecordingCase(a.case_path);
+  // A force case's set-up is a test rig moved through a curve, not one equilibrium: solving
+  // its nominal set-up alone gives nothing to compare (it once printed "0 Newton iterations,
+  // UNSTABLE" and exited 0). Say where it belongs instead.
+  bool has_shape = rc.recordings.empty();
+  for (const RecordingRef& r : rc.recordings) has_shape = has_shape || r.kind != RecordingKind::kForceCurve;
+  if (!has_shape) {
+    throw FileError(rc.case_file,
+                    "is a force case (only force_curve recordings): 'cablefit simulate' solves "
+                    "the shape set-up of a case; 'cablefit diagnose' simulates its force test");
+  }
   std::vector<std::string> inputs = {a.case_path, rc.case_file};
   for (const RecordingRef& r : rc.recordings) inputs.push_back(r.path);
   if (!a.initial.empty()) inputs.push_back(a.initial);
@@ -53,11 +64,15 @@ int RunSimulate(const SimulateArgs& a) {
   const Polyline out = SampleCenterline(r.solution.centerline,
                                         UniformArcLengths(rc.nominal.length, a.samples));
   WriteCenterlineCsv((dir / "centerline.csv").string(), out);
-  json::WriteJsonFile((dir / "solution.json").string(), SolutionToJson(rc.name, rc.nominal, r));
-  std::printf("%s: %s, %d elements, %d Newton iterations, est. error %.1e m, %s, %.1f ms\n",
+  json::Json solution = SolutionToJson(rc.name, rc.nominal, r);
+  std::vector<std::pair<std::string, std::string>> sources = {{"case", rc.case_file},
+                                                              {"initial", a.initial}};
+  solution["provenance"] = ProvenanceJson(sources);
+  json::WriteJsonFile((dir / "solution.json").string(), solution);
+  std::printf("%s: %s, %d elements, %d Newton iterations, est. error %.2g mm, %s, %.1f ms\n",
               TerminalSafe(rc.name).c_str(), r.converged ? "converged" : "NOT CONVERGED",
               r.level_elements.empty() ? 0 : r.level_elements.back(), r.newton_iterations,
-              r.estimated_error, r.solution.summary.stable ? "stable" : "UNSTABLE",
+              1e3 * r.estimated_error, r.solution.summary.stable ? "stable" : "UNSTABLE",
               r.seconds * 1e3);
   if (!r.converged) {
     std::fprintf(stderr, "cablefit: %s: solver did not converge: %s\n",

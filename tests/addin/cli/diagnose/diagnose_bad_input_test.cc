@@ -3,6 +3,7 @@
 // listed again at the end, and the exit status is 1 (2 when nothing could be read at all).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -114,7 +115,7 @@ TEST(DiagnoseBadInput, EachBrokenCaseIsOneLineNamingItsFileAndTheOthersRun) {
     }
     EXPECT_FALSE(fs::exists(out / file.parent_path().filename() / "diagnosis.json"));
   }
-  EXPECT_EQ(CountLinesContaining(run.err, "5 input(s) failed"), 1) << run.err;
+  EXPECT_EQ(CountLinesContaining(run.err, "diagnose: 5 failure(s):"), 1) << run.err;
   // The run summary lists the good case and the failures.
   const std::string summary = Slurp(out / "report.html");
   EXPECT_NE(summary.find("good-force/report.html"), std::string::npos);
@@ -159,6 +160,57 @@ TEST(DiagnoseBadInput, ControlCharactersInNamesCannotForgeOutput) {
     EXPECT_EQ(text.find('\x07'), std::string::npos);
   }
   EXPECT_NE(run.out.find("ctrl\\x0aFAKE"), std::string::npos) << run.out;
+}
+
+}  // namespace
+}  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+// --out naming an existing file is refused before any case runs: nothing is written and no
+// summary is announced.
+TEST(DiagnoseBadInput, OutNamingAFileIsRefusedBeforeAnyWork) {
+  const fs::path root = testing::FreshTempDir("diagnose-out-file");
+  Spit(root / "taken", "not a folder");
+  const testing::CliRun run = testing::RunCablefit("diagnose '" + Public("sample-none").string() +
+                                                   "' --out '" + (root / "taken").string() + "'");
+  EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
+  EXPECT_NE(run.err.find("exists and is not a folder"), std::string::npos) << run.err;
+  EXPECT_EQ(run.out.find("summary:"), std::string::npos) << run.out;
+  EXPECT_EQ(Slurp(root / "taken"), "not a folder");
+}
+
+// --quiet leaves only the final line on the standard output; --summary-json has every case
+// with its status, the failures as on the standard error, and the provenance.
+TEST(DiagnoseBadInput, QuietAndSummaryJsonSayTheSameAsTheFailureList) {
+  const fs::path root = testing::FreshTempDir("diagnose-summary-json");
+  const fs::path in = root / "in";
+  CopyCase("sample-force-stiffness", in, "good-force");
+  const fs::path missing = CopyCase("sample-force-none", in, "missing-file");
+  fs::remove(missing / "torsion.csv");
+  const fs::path summary = root / "summary.json";
+  const testing::CliRun run =
+      testing::RunCablefit("diagnose '" + in.string() + "' --out '" + (root / "out").string() +
+                           "' --quiet --summary-json '" + summary.string() + "'");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_EQ(std::count(run.out.begin(), run.out.end(), '\n'), 1) << run.out;
+  EXPECT_EQ(run.out.rfind("diagnose: 1 of 2 case(s) diagnosed, 1 failed; ", 0), 0u) << run.out;
+  EXPECT_EQ(CountLinesContaining(run.err, "diagnose: 1 failure(s):"), 1) << run.err;
+  const json::Json j = json::ReadJsonFile(summary.string());
+  EXPECT_EQ(j.at("format"), "cablefit-diagnose-summary/1");
+  EXPECT_EQ(j.at("counts").at("cases"), 2);
+  EXPECT_EQ(j.at("counts").at("diagnosed"), 1);
+  EXPECT_EQ(j.at("counts").at("failed"), 1);
+  ASSERT_EQ(j.at("failures").size(), 1u);
+  const std::string failure = j.at("failures")[0].get<std::string>();
+  EXPECT_NE(run.err.find("cablefit: " + failure + "\n"), std::string::npos) << failure;
+  int diagnosed = 0;
+  for (const json::Json& c : j.at("cases")) diagnosed += c.at("status") == "diagnosed" ? 1 : 0;
+  EXPECT_EQ(diagnosed, 1);
+  EXPECT_EQ(j.at("provenance").at("inputs").size(), 2u);
+  EXPECT_NE(j.at("provenance").at("command_line").get<std::string>().find("--summary-json"),
+            std::string::npos);
 }
 
 }  // namespace

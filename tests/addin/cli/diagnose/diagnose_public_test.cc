@@ -206,6 +206,10 @@ TEST(DiagnosePublic, AllCasesWriteTheContractAndForceCasesAreIdentified) {
       EXPECT_TRUE(fs::exists(res / file)) << file;
     }
     EXPECT_NE(summary.find("href=\"" + rc.name + "/report.html\""), std::string::npos);
+    // A force test has no interval or clamp along the cable; the report names its inputs with
+    // their SHA-256 like diagnosis.json does.
+    EXPECT_EQ(report.find("<div class=\"k\">interval</div>") == std::string::npos, !force.empty());
+    EXPECT_NE(report.find("sha256 " + FileSha256(rc.case_file)), std::string::npos);
   }
   EXPECT_EQ(force_cases, 3);
 }

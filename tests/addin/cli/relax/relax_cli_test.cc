@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -584,6 +585,100 @@ TEST(RelaxCli, FreeCadCablesDrawnAsCurvesAndSweepsAllRelax) {
     }
     EXPECT_GE(relaxed, 12) << name;
   }
+}
+
+// The report's table sorts numbers as numbers (the script reads data-value), says the default
+// material once above the table instead of in every row, names a material file by its name
+// only, and has a header and the run's provenance; every length is in mm.
+TEST(RelaxCli, ReportSortsNumbersAndSaysTheDefaultMaterialOnce) {
+  const fs::path dir = testing::FreshTempDir("relax_report_table");
+  WriteText(dir / "section.json",
+            R"({"format": "cablefit-section/1", "library": ")" +
+                (testing::SourceDir() / "samples/materials/automotive.json").string() +
+                R"(", "components": [{"name": "w", "wire": "FLRY-B 0.5", "position": [0, 0]}]})");
+  WriteText(dir / "harness.json", R"({"cables": {"trunk": {"material": {"section": "section.json"}}}})");
+  const auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " +
+                               Q(dir / "out") + " --config " + Q(dir / "harness.json") +
+                               " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string report = testing::ReadTextFile(dir / "out/report.html");
+  EXPECT_EQ(report.find("data-v="), std::string::npos);
+  EXPECT_NE(report.find("data-value=\""), std::string::npos);
+  EXPECT_NE(report.find("getAttribute('data-value')"), std::string::npos);
+  // Four cables have the default material: its note once, not four times.
+  const std::string note = "PVC-insulated copper bundle estimated from the diameter";
+  const size_t first = report.find(note);
+  ASSERT_NE(first, std::string::npos);
+  EXPECT_EQ(report.find(note, first + 1), std::string::npos);
+  // The material file by its name; its full path only in the tooltip.
+  EXPECT_NE(report.find(">section.json</span>"), std::string::npos);
+  EXPECT_NE(report.find("<header class=\"top\">"), std::string::npos);
+  EXPECT_NE(report.find("<main>"), std::string::npos);
+  EXPECT_NE(report.find("sha256 " + FileSha256(Sample("legacy_harness.step").string())),
+            std::string::npos);
+  EXPECT_NE(report.find("<small>relaxed "), std::string::npos);
+  EXPECT_NE(report.find("max<br>tension"), std::string::npos);
+  EXPECT_NE(report.find("<small>clamp "), std::string::npos);  // each support's reaction
+  EXPECT_FALSE(std::regex_search(report, std::regex(R"(\d m<)")));  // no length in metres
+  EXPECT_EQ(report.find("\u00b5m"), std::string::npos);
+}
+
+// --quiet: only the final summary line on the standard output; --summary-json: the same counts
+// per input and cable, the failures and the provenance; the final line is printed without it.
+TEST(RelaxCli, QuietSummaryJsonAndTheFinalLine) {
+  const fs::path dir = testing::FreshTempDir("relax_quiet");
+  WriteText(dir / "empty.step", "");
+  const fs::path summary = dir / "summary.json";
+  const auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " " +
+                               Q(dir / "empty.step") + " --out " + Q(dir / "out") +
+                               " --no-pictures --quiet --summary-json " + Q(summary));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(std::count(run.out.begin(), run.out.end(), '\n'), 1) << run.out;
+  EXPECT_EQ(run.out.rfind("relax: 5 cables from 2 inputs: 5 relaxed, 0 failed, ", 0), 0u) << run.out;
+  EXPECT_NE(run.out.find("largest deviation "), std::string::npos) << run.out;
+  // Failures: one prefixed line when found, the same line in the list at the end.
+  const std::string line = "cablefit: " + (dir / "empty.step").string() + ": ";
+  const size_t at = run.err.find(line);
+  ASSERT_NE(at, std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(line, at + 1), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("cablefit: relax: 1 failure(s):\n"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("\n  "), std::string::npos) << run.err;  // no indented lines
+  const Json j = json::ReadJsonFile(summary.string());
+  EXPECT_EQ(j.at("format"), "cablefit-relax-summary/1");
+  EXPECT_EQ(j.at("counts").at("inputs"), 2);
+  EXPECT_EQ(j.at("counts").at("cables"), 5);
+  EXPECT_EQ(j.at("counts").at("relaxed"), 5);
+  EXPECT_EQ(j.at("counts").at("inputs_failed"), 1);
+  ASSERT_EQ(j.at("inputs").size(), 2u);
+  EXPECT_EQ(j.at("inputs")[0].at("status"), "ok");
+  EXPECT_EQ(j.at("inputs")[0].at("cables").size(), 5u);
+  EXPECT_EQ(j.at("inputs")[1].at("status"), "unread");
+  ASSERT_EQ(j.at("failures").size(), 1u);
+  EXPECT_EQ(j.at("failures")[0].get<std::string>().rfind((dir / "empty.step").string(), 0), 0u);
+  EXPECT_EQ(j.at("provenance").at("inputs")[0].at("sha256"),
+            FileSha256(Sample("legacy_harness.step").string()));
+  // The per-input JSON names the command line and the date too, its old fields unchanged.
+  const Json per_input = json::ReadJsonFile((dir / "out/legacy_harness.json").string());
+  EXPECT_NE(per_input.at("provenance").at("command_line").get<std::string>().find("--quiet"),
+            std::string::npos);
+  EXPECT_EQ(per_input.at("provenance").at("date").get<std::string>().size(), 20u);
+  EXPECT_EQ(per_input.at("format"), "cablefit-relax/1");
+}
+
+// --out naming an existing file, or --summary-json naming a folder, is a usage error found
+// before any input is read.
+TEST(RelaxCli, OutNamingAFileIsRefusedBeforeAnyWork) {
+  const fs::path dir = testing::FreshTempDir("relax_out_file");
+  WriteText(dir / "taken", "x");
+  auto run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "taken"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("exists and is not a folder"), std::string::npos) << run.err;
+  EXPECT_EQ(run.out, "");
+  run = RunCablefit("relax " + Q(Sample("legacy_harness.step")) + " --out " + Q(dir / "out") +
+                    " --summary-json " + Q(dir));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("--summary-json"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir / "out/legacy_harness.json"));
 }
 
 }  // namespace

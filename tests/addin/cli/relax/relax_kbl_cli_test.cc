@@ -95,7 +95,7 @@ TEST(RelaxKblCli, ABrokenKblFileFailsAloneAndTheBatchGoesOn) {
   EXPECT_NE(run.err.find("cablefit: " + bad.string() + ": not XML"), std::string::npos) << run.err;
   EXPECT_TRUE(fs::exists(out / (std::string(kGearbox) + ".json")));
   EXPECT_TRUE(fs::exists(out / (std::string(kGearbox) + ".step")));
-  EXPECT_NE(run.out.find("Segment_1: L=0.625 m"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("Segment_1: L=625 mm"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("(TOO TIGHT: the cable's limit 29.4 mm, at s="), std::string::npos)
       << run.out;
 }

@@ -81,6 +81,47 @@ TEST(ReportBrowserTest, DiagnoseReportsRenderInChromium) {
   CheckPage(work / "out" / "sample-force-hysteresis" / "report.html", work);
 }
 
+// Runs `script` in `page` in a 1400 px wide headless Chromium and returns what it put in the
+// body's data-probe attribute. The page is copied next to the original (images still load).
+std::string Probe(const fs::path& page, const std::string& script, const fs::path& profile) {
+  const fs::path probe = page.parent_path() / "probe.html";
+  std::ofstream(probe) << Slurp(page) << "<script>" << script << "</script>\n";
+  const fs::path dom = page.parent_path() / "probe-dom.html";
+  const std::string cmd =
+      "chromium --headless --no-sandbox --disable-gpu --no-first-run --user-data-dir='" +
+      profile.string() + "' --window-size=1400,2000 --virtual-time-budget=3000 --dump-dom 'file://" +
+      probe.string() + "' > '" + dom.string() + "' 2> /dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::smatch m;
+  const std::string text = Slurp(dom);
+  return std::regex_search(text, m, std::regex(R"re(data-probe="([^"]*)")re")) ? m[1].str() : "";
+}
+
+// The relax report at 1400 px: nothing scrolls sideways, and clicking "max deviation" sorts
+// the rows by their numbers (not as text: 11.2, 12.1, 2.68 was the bug).
+TEST(ReportBrowserTest, RelaxReportFitsAndSortsNumbers) {
+  const fs::path work = testing::FreshTempDir("relax-report-probe");
+  const fs::path harness = testing::SourceDir() / "samples" / "harness";
+  const auto run = testing::RunCablefit("relax '" + (harness / "legacy_harness.step").string() +
+                                        "' '" + (harness / "branched_tubes.stl").string() +
+                                        "' --no-pictures --out '" + (work / "out").string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string result = Probe(work / "out" / "report.html", R"js(
+    var over = document.documentElement.scrollWidth - document.documentElement.clientWidth;
+    document.querySelectorAll('.table-wrap').forEach(function (e) {
+      over = Math.max(over, e.scrollWidth - e.clientWidth); });
+    var t = document.querySelector('table.sortable');
+    var heads = Array.from(t.tHead.rows[0].cells);
+    var k = heads.findIndex(function (h) { return h.textContent.indexOf('max deviation') === 0; });
+    heads[k].click();
+    var v = Array.from(t.tBodies[0].rows).map(function (r) {
+      return parseFloat(r.cells[k].getAttribute('data-value')); });
+    var sorted = v.every(function (x, i) { return i === 0 || v[i - 1] <= x; });
+    document.body.setAttribute('data-probe', 'overflow=' + over + ';sorted=' + sorted + ';rows=' + v.length);
+  )js", work / "profile");
+  EXPECT_EQ(result, "overflow=0;sorted=true;rows=8") << result;
+}
+
 TEST(ReportBrowserTest, RelaxReportRendersInChromium) {
   const fs::path work = testing::FreshTempDir("relax-report");
   const fs::path step = testing::SourceDir() / "samples" / "harness" / "legacy_harness.step";

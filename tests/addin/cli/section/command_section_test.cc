@@ -149,3 +149,32 @@ TEST(SectionCommandTest, BadInputIsOneLineNamingFileExit2) {
 
 }  // namespace
 }  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+// --format text: the figures with their units for a person; the JSON (stdout when piped, as
+// cli-v1 says, and --out) is unchanged and carries the provenance.
+TEST(SectionCommandTest, TextFormatSummarisesWithUnitsAndJsonStaysTheDefaultWhenPiped) {
+  const auto dir = testing::FreshTempDir("section_text");
+  const std::string file = Write(dir, "s.json", R"({"library": ")" + Library() + R"(",
+      "components": [{"name": "w", "wire": "FLRY-B 1", "position": [0, 0]}],
+      "torsion": {"finest_cells": 64}})");
+  const std::string out_file = (dir / "r.json").string();
+  const CliRun text = RunCli({"section", file, "--format", "text", "--out", out_file});
+  ASSERT_EQ(text.code, 0) << text.err;
+  const auto j = nlohmann::json::parse(std::ifstream(out_file));
+  for (const char* unit : {" mm\n", " kg/m\n", " N m^2", " mm^2\n"})
+    EXPECT_NE(text.out.find(unit), std::string::npos) << unit << "\n" << text.out;
+  EXPECT_NE(text.out.find("all figures as JSON in " + out_file), std::string::npos) << text.out;
+  EXPECT_EQ(text.out.find('{'), std::string::npos) << text.out;
+  EXPECT_EQ(j.at("provenance").at("inputs")[0].at("path"), file);
+  // Captured (not a terminal): JSON, as before.
+  const CliRun piped = RunCli({"section", file});
+  ASSERT_EQ(piped.code, 0) << piped.err;
+  EXPECT_TRUE(nlohmann::json::parse(piped.out).contains("provenance"));
+  EXPECT_EQ(RunCli({"section", file, "--format", "yaml"}).code, 2);
+}
+
+}  // namespace
+}  // namespace cablefit

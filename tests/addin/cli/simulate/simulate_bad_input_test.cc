@@ -72,3 +72,23 @@ TEST(SimulateBadInputTest, MalformedInitialShape) {
 
 }  // namespace
 }  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+// A force case has no single shape to solve: simulate says so and where it belongs, writes
+// nothing and exits 2 (it once printed "0 Newton iterations ... UNSTABLE" and exited 0).
+TEST(SimulateBadInputTest, AForceCaseIsSentToDiagnose) {
+  const fs::path out = testing::FreshTempDir("simulate-force") / "out";
+  const fs::path force = testing::SourceDir() / "samples/cases/sample-force-hysteresis";
+  const testing::CliRun run =
+      testing::RunCablefit("simulate '" + force.string() + "' --out '" + out.string() + "'");
+  EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
+  EXPECT_NE(run.err.find("is a force case"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("'cablefit diagnose'"), std::string::npos) << run.err;
+  EXPECT_EQ(run.out.find("Newton"), std::string::npos) << run.out;
+  EXPECT_FALSE(fs::exists(out / "solution.json"));
+}
+
+}  // namespace
+}  // namespace cablefit

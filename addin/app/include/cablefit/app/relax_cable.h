@@ -31,6 +31,12 @@ inline constexpr double kDefaultAxialModulus = 13e9;
 /// Its tension is then set by its stretch (EA) and the supports' exact positions, not by its
 /// weight, and a small error in either changes it many times over.
 inline constexpr double kTautSlack = 0.005;
+
+/// The note every cable without a material gets (in its JSON `notes`); the report says it once
+/// above its table instead of in every row.
+inline constexpr const char* kDefaultMaterialNote =
+    "material not given: PVC-insulated copper bundle estimated from the diameter "
+    "(E_eff = 75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the disc)";
 /// Diameter assumed for a bare curve without one in harness.json [m].
 inline constexpr double kDefaultDiameter = 0.008;
 

@@ -15,7 +15,8 @@ std::string HtmlEscape(const std::string& text);
 /// "1.23e-06"); "–" for NaN/Inf.
 std::string FormatNumber(double value, int digits = 3);
 
-/// A length in the unit that reads best: "12.3 mm", "0.45 m", "8.1 µm".
+/// A length in millimetres, the one length unit of every report: "12.3 mm", "450 mm",
+/// "0.0081 mm".
 std::string FormatLength(double metres);
 
 /// A deviation in `unit` ("m" -> FormatLength, else number + unit).
@@ -31,6 +32,10 @@ std::string FormatSeconds(double seconds);
 /// `x_unit`/`y_unit` are a force curve's units, used for offsets and loop areas. "" if unknown.
 std::string ParameterUnit(const std::string& name, const std::string& x_unit,
                           const std::string& y_unit);
+
+/// What a parameter whose name does not say it means ("f_slip_1": "slip force of hysteresis
+/// element 1 ..."); "" for the self-explaining ones.
+std::string ParameterMeaning(const std::string& name);
 
 /// A parameter value with its unit; radians also in degrees ("0.191 rad (10.97°)").
 std::string FormatParameter(double value, const std::string& unit);
