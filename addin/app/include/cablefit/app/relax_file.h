@@ -11,6 +11,7 @@
 #include "cablefit/formats/harness_drawing.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_clearance.h"
 
 namespace cablefit::addin {
 
@@ -57,7 +58,13 @@ struct RelaxedFile {
   /// By cable name, what the input itself says about the cable (KBL: the "kbl" object).
   std::map<std::string, json::Json> cable_json;
   std::vector<std::string> notes;      ///< what reading the input found or assumed
+  /// Relaxed cables against the solids and each other (MeasureFileClearances).
+  std::vector<ClearancePair> clearances;
 };
+
+/// Fills f->clearances from the relaxed cables (failed ones are left out) and the drawing's
+/// solids, with the min_clearance `config` asks of them.
+void MeasureFileClearances(const HarnessConfig& config, RelaxedFile* f);
 
 /// The settings `f` is relaxed with: its own, else the run's `config`.
 const HarnessConfig& ConfigOf(const RelaxedFile& f, const HarnessConfig& config);
