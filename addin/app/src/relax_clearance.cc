@@ -87,6 +87,33 @@ std::string ClearanceViolationText(const ClearancePair& p) {
   return buf;
 }
 
+std::vector<OrientedBox> ClearanceBoxes(const HarnessDrawing& drawing) {
+  std::vector<OrientedBox> boxes;
+  for (const DrawnSolid& s : drawing.solids)
+    boxes.push_back(s.mesh.vertices.cols() > 0 ? BoundingBoxOf(s.mesh) : OrientedBox{});
+  return boxes;
+}
+
+ClearanceCable ClearanceCableOf(const CableRelaxation& r, const Polyline* centreline,
+                                const HarnessDrawing& drawing,
+                                const std::vector<OrientedBox>& boxes, const HarnessConfig& config) {
+  ClearanceCable c;
+  c.name = r.setup.name;
+  c.centreline = centreline;
+  c.radius = 0.5 * r.setup.spec.material.diameter;
+  c.min_clearance = config.For(c.name).min_clearance.value_or(0.0);
+  // A solid holds the cable when one of its supports lies in the solid's box: a clip found on
+  // it, or an end held in a connector or ring (the way SetUpCable finds clips).
+  for (size_t k = 0; k < boxes.size() && k < drawing.solids.size(); ++k) {
+    for (const SupportSpec& sp : r.setup.spec.supports)
+      if (boxes[k].half_extent.prod() > 0 && boxes[k].Contains(sp.position)) {
+        c.clipped_to.push_back(drawing.solids[k].name);
+        break;
+      }
+  }
+  return c;
+}
+
 void MeasureFileClearances(const HarnessConfig& config, RelaxedFile* f) {
   std::vector<SolidClearance> geometry;
   geometry.reserve(f->drawing.solids.size());
@@ -95,29 +122,12 @@ void MeasureFileClearances(const HarnessConfig& config, RelaxedFile* f) {
   for (size_t k = 0; k < f->drawing.solids.size(); ++k)
     solids.push_back({f->drawing.solids[k].name, &geometry[k],
                       config.SolidMinClearance(f->drawing.solids[k].name)});
-  std::vector<OrientedBox> boxes;
-  for (const DrawnSolid& s : f->drawing.solids)
-    boxes.push_back(s.mesh.vertices.cols() > 0 ? BoundingBoxOf(s.mesh) : OrientedBox{});
+  const std::vector<OrientedBox> boxes = ClearanceBoxes(f->drawing);
   std::vector<ClearanceCable> cables;
-  for (size_t i = 0; i < f->cables.size(); ++i) {
-    if (!f->cables[i]) continue;
-    const CableRelaxation& r = *f->cables[i];
-    ClearanceCable c;
-    c.name = r.setup.name;
-    c.centreline = &r.relaxed;
-    c.radius = 0.5 * r.setup.spec.material.diameter;
-    c.min_clearance = config.For(c.name).min_clearance.value_or(0.0);
-    // A solid holds the cable when one of its supports lies in the solid's box: a clip found on
-    // it, or an end held in a connector or ring (the way SetUpCable finds clips).
-    for (size_t k = 0; k < boxes.size(); ++k) {
-      for (const SupportSpec& sp : r.setup.spec.supports)
-        if (boxes[k].half_extent.prod() > 0 && boxes[k].Contains(sp.position)) {
-          c.clipped_to.push_back(f->drawing.solids[k].name);
-          break;
-        }
-    }
-    cables.push_back(std::move(c));
-  }
+  for (size_t i = 0; i < f->cables.size(); ++i)
+    if (f->cables[i])
+      cables.push_back(
+          ClearanceCableOf(*f->cables[i], &f->cables[i]->relaxed, f->drawing, boxes, config));
   f->clearances = MeasureClearances(cables, solids);
 }
 

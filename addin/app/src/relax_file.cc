@@ -268,6 +268,11 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
     }
     if (least) c["clearance"] = ClearancePairToJson(*least);
   }
+  if (f.motion) {
+    for (const CableMotion& m : f.motion->cables)
+      cables[static_cast<size_t>(m.cable)]["motion"] = CableMotionToJson(m, f.motion->config);
+    j["motion"] = FileMotionToJson(*f.motion);
+  }
   j["cables"] = cables;
   json::Json pairs = json::Json::array();
   int violations = 0;

@@ -250,7 +250,7 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
     for (const std::string& e : failures) h << "<li>" << HtmlEscape(e) << "</li>";
     h << "</ul></section>\n";
   }
-  h << ClearanceReportSection(files);
+  h << ClearanceReportSection(files) << MotionReportSection(files);
   for (const RelaxedFile& f : files) {
     if (f.picture.empty()) continue;
     h << "<section class=\"card\"><h2>" << HtmlEscape(f.stem) << "</h2><figure><a href=\""

@@ -272,6 +272,9 @@ int RunRelax(const RelaxArgs& a) {
     MeasureFileClearances(ConfigOf(f, config), &f);
     for (const ClearancePair& p : f.clearances)
       if (p.violation()) bar.PrintLine(stdout, f.stem + ": CLEARANCE: " + ClearanceViolationText(p));
+    RunFileMotion(ConfigOf(f, config), sim_options, &f);  // the harness.json motion, if any
+    if (f.motion)
+      for (const std::string& line : MotionLines(*f.motion)) bar.PrintLine(stdout, f.stem + ": " + line);
   }
 
   // 3. Write each input's outputs.

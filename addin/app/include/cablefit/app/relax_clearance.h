@@ -8,6 +8,8 @@
 #include "cablefit/core/network/clearance.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/harness_config.h"
+#include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_clips.h"
 
 namespace cablefit::addin {
 
@@ -52,6 +54,15 @@ inline constexpr double kJunctionSkipFactor = 4.0;
 /// order, solids in theirs. Deterministic.
 std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& cables,
                                              const std::vector<ClearanceSolid>& solids);
+
+/// Cable `r` with `centreline` (its relaxed one, or a moved pose's) as clearance sees it: its
+/// radius, the min_clearance `config` asks, and the solids of `drawing` (boxes `boxes`, same
+/// order) holding one of its supports at their drawn places.
+ClearanceCable ClearanceCableOf(const CableRelaxation& r, const Polyline* centreline,
+                                const HarnessDrawing& drawing,
+                                const std::vector<OrientedBox>& boxes, const HarnessConfig& config);
+/// One box per solid (empty for a solid without vertices), as ClearanceCableOf takes.
+std::vector<OrientedBox> ClearanceBoxes(const HarnessDrawing& drawing);
 
 struct RelaxedFile;
 /// The report's "Clearance" card: every violation of every input, or one line saying there is

@@ -12,6 +12,7 @@
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_clearance.h"
+#include "cablefit/app/relax_motion.h"
 
 namespace cablefit::addin {
 
@@ -60,6 +61,8 @@ struct RelaxedFile {
   std::vector<std::string> notes;      ///< what reading the input found or assumed
   /// Relaxed cables against the solids and each other (MeasureFileClearances).
   std::vector<ClearancePair> clearances;
+  /// The harness.json motion run on this input (RunFileMotion); unset without one.
+  std::optional<FileMotion> motion;
 };
 
 /// Fills f->clearances from the relaxed cables (failed ones are left out) and the drawing's
