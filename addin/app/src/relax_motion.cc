@@ -21,6 +21,9 @@ namespace {
 using json::Json;
 using Clock = std::chrono::steady_clock;
 
+// Points of each pose's shape in the JSON: enough to draw it, few enough for 100s of poses.
+constexpr int kPoseShapeSamples = 51;
+
 // Parameter as the user wrote it: degrees for a rotation, metres for a translation.
 double Shown(const MotionConfig& m, double q) {
   return m.kind == MotionConfig::Kind::kRotation ? q * 180 / M_PI : q;
@@ -224,6 +227,14 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
                {"reactions", reactions},
                {"step", p.step},
                {"iterations", p.newton_iterations}};
+    // The shape at a few points per pose (the relaxed cable's own centreline has ~1 per mm).
+    Json rows = Json::array();
+    const Polyline shape = SampleCenterline(p.centreline, UniformArcLengths(
+                                                              p.centreline.s[p.centreline.size() - 1],
+                                                              kPoseShapeSamples));
+    for (int k = 0; k < shape.size(); ++k)
+      rows.push_back({shape.s[k], shape.points(0, k), shape.points(1, k), shape.points(2, k)});
+    pj["centreline"] = {{"columns", {"s", "x", "y", "z"}}, {"rows", rows}};
     if (p.escaped_unstable || p.jumped)
       pj["how"] = p.escaped_unstable ? "unstable equilibrium" : "jump";
     if (p.clearance.found()) {
