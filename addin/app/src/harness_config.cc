@@ -401,7 +401,7 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   const FieldReader r(root, path);
   RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
                        "junctions", "junction_defaults", "rigid", "only", "note", "solids",
-                       "motion"});
+                       "motion", "tolerances"});
   if (r.Has("format") && r.RequireString("format") != "cablefit-harness/1") {
     r.Fail("format", "must be \"cablefit-harness/1\"");
   }
@@ -435,6 +435,25 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
     }
   }
   if (r.Has("motion")) h.motion = ReadMotion(r.Child("motion"));
+  if (r.Has("tolerances")) {
+    const FieldReader t = r.Child("tolerances");
+    RequireKnownKeys(t, {"length", "bending_stiffness", "linear_density", "note"});
+    ToleranceConfig tc;
+    // Fractions: beyond these it is another cable, not a tolerance (and EI or the mass would
+    // reach zero).
+    auto fraction = [&t](const std::string& key, double most) {
+      if (!t.Has(key)) return 0.0;
+      const double x = t.RequireNonNegative(key);
+      if (x >= most) t.Fail(key, "must be a fraction below " + std::to_string(most).substr(0, 3) +
+                                     " (0.02 = +-2 %)");
+      return x;
+    };
+    tc.length = fraction("length", 0.5);
+    tc.bending_stiffness = fraction("bending_stiffness", 0.9);
+    tc.linear_density = fraction("linear_density", 0.9);
+    if (!tc.any()) t.FailHere("must vary at least one of length, bending_stiffness, linear_density");
+    h.tolerances = tc;
+  }
   if (r.Has("default")) h.defaults = ReadCable(r.Child("default"), /*is_default=*/true);
   if (r.Has("cables")) {
     const FieldReader cables = r.Child("cables");

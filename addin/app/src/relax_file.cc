@@ -273,6 +273,11 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
       cables[static_cast<size_t>(m.cable)]["motion"] = CableMotionToJson(m, f.motion->config);
     j["motion"] = FileMotionToJson(*f.motion);
   }
+  if (f.tolerance) {
+    for (const CableTolerance& t : f.tolerance->cables)
+      cables[static_cast<size_t>(t.cable)]["tolerance"] = CableToleranceToJson(t);
+    j["tolerance_problems"] = f.tolerance->problems;
+  }
   j["cables"] = cables;
   json::Json pairs = json::Json::array();
   int violations = 0;

@@ -275,6 +275,9 @@ int RunRelax(const RelaxArgs& a) {
     RunFileMotion(ConfigOf(f, config), sim_options, &f);  // the harness.json motion, if any
     if (f.motion)
       for (const std::string& line : MotionLines(*f.motion)) bar.PrintLine(stdout, f.stem + ": " + line);
+    RunFileTolerance(ConfigOf(f, config), sim_options, &f);  // harness.json tolerances, if any
+    if (f.tolerance)
+      for (const std::string& line : ToleranceLines(*f.tolerance)) bar.PrintLine(stdout, f.stem + ": " + line);
   }
 
   // 3. Write each input's outputs.

@@ -85,5 +85,22 @@ TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
   EXPECT_NE(Error("{" + hinge + ", \"speed\": 3, " + moving + "}").find("speed"), std::string::npos);
 }
 
+TEST(RelaxToleranceConfig, FractionsAreReadAndImpossibleOnesRefused) {
+  static const auto dir = testing::FreshTempDir("relax_tolerance_config");
+  const std::string path = (dir / "harness.json").string();
+  std::ofstream(path) << R"({"tolerances": {"length": 0.02, "bending_stiffness": 0.3}})";
+  const HarnessConfig h = ReadHarnessConfig(path);
+  ASSERT_TRUE(h.tolerances);
+  EXPECT_DOUBLE_EQ(h.tolerances->length, 0.02);
+  EXPECT_DOUBLE_EQ(h.tolerances->bending_stiffness, 0.3);
+  EXPECT_DOUBLE_EQ(h.tolerances->linear_density, 0.0);
+  for (const char* bad : {R"({"tolerances": {"length": -0.02}})", R"({"tolerances": {"length": 0.5}})",
+                          R"({"tolerances": {"bending_stiffness": 0.95}})", R"({"tolerances": {}})",
+                          R"({"tolerances": {"length": "2%"}})", R"({"tolerances": {"clips": 0.01}})"}) {
+    std::ofstream(path) << bad;
+    EXPECT_THROW(ReadHarnessConfig(path), FileError) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace cablefit::addin

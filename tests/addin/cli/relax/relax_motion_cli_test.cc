@@ -1,7 +1,8 @@
 // `cablefit relax --config` with a motion and clearances, end to end on the door-hinge sample:
 // the door opens and closes and the cable comes back to its relaxed shape; a pose reached in
 // one step or in nine is the same equilibrium; the relaxed cable is pose 0; clearance
-// violations are printed; a moving support naming no cable is a problem line, not a failure.
+// violations are printed; a moving support naming no cable is a problem line, not a failure; the
+// tolerance envelope of a length variation matches single relaxes at its extremes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,6 +120,55 @@ TEST(RelaxMotionCli, ClearanceViolationsArePrintedAndAMissingCableIsAProblemLine
   // Old fields are still there, unchanged in name.
   for (const char* key : {"deviation", "min_bend_radius", "max_tension", "supports", "solver"})
     EXPECT_TRUE(j["cables"][0].contains(key)) << key;
+}
+
+// The relaxed centreline of a relax JSON's first cable at relative arc length u in [0, 1].
+Vec3 AtFraction(const Json& cable, double u) {
+  const Json& rows = cable["relaxed_centreline"]["rows"];
+  const double length = rows.back()[0].get<double>();
+  const double s = u * length;
+  size_t i = 1;
+  while (i + 1 < rows.size() && rows[i][0].get<double>() < s) ++i;
+  const double s0 = rows[i - 1][0].get<double>(), s1 = rows[i][0].get<double>();
+  const double t = s1 > s0 ? (s - s0) / (s1 - s0) : 0.0;
+  Vec3 p;
+  for (int c = 0; c < 3; ++c)
+    p[c] = (1 - t) * rows[i - 1][c + 1].get<double>() + t * rows[i][c + 1].get<double>();
+  return p;
+}
+
+TEST(RelaxMotionCli, TheLengthEnvelopeMatchesSingleRelaxesAtItsExtremes) {
+  const fs::path dir = testing::FreshTempDir("relax_tolerance_length");
+  const fs::path config = Config(dir, [](Json* j) {
+    j->erase("motion");
+    (*j)["tolerances"] = {{"length", 0.02}};
+  });
+  std::string text;
+  const Json env = Relax(config, dir / "envelope", &text);
+  EXPECT_NE(text.find("tolerance: door_hinge#1: max excursion"), std::string::npos) << text;
+  const Json& t = env["cables"][0]["tolerance"];
+  ASSERT_EQ(t["corners"].size(), 2u);
+  EXPECT_TRUE(t["interior_within_corners"].get<bool>());
+  const Json nominal = env["cables"][0];
+  for (int k = 0; k < 2; ++k) {
+    const Json& corner = t["corners"][k];
+    const double fraction = corner["length"].get<double>();
+    ASSERT_NEAR(std::abs(fraction), 0.02, 1e-15);
+    // The same cable relaxed on its own at that length (harness.json "length": "+-2%").
+    const fs::path single = Config(dir, [&](Json* j) {
+      j->erase("motion");
+      (*j)["cables"]["door_hinge#1"]["length"] = fraction > 0 ? "+2%" : "-2%";
+    });
+    const Json one = Relax(single, dir / ("single" + std::to_string(k)));
+    double largest = 0.0;
+    for (int i = 0; i <= 200; ++i) {
+      const double u = i / 200.0;
+      largest = std::max(largest, (AtFraction(nominal, u) - AtFraction(one["cables"][0], u)).norm());
+    }
+    // Both sides interpolate ~1 mm output rows: agreement to well under the sampling error.
+    EXPECT_NEAR(corner["excursion"].get<double>(), largest, 2e-5) << fraction;
+    EXPECT_GT(largest, 1e-3);  // a 2 % longer or shorter cable does move
+  }
 }
 
 }  // namespace

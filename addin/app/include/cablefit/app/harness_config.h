@@ -108,6 +108,15 @@ struct MotionConfig {
   const char* KindName() const;
 };
 
+/// "tolerances": relative +- variations of every cable's length, bending (and torsional)
+/// stiffness and linear density; 0 = not varied. The tolerance envelope solves every corner.
+struct ToleranceConfig {
+  double length = 0.0;             ///< e.g. 0.02 = +-2 % of the built length
+  double bending_stiffness = 0.0;  ///< scales EI and GJ together
+  double linear_density = 0.0;
+  bool any() const { return length > 0 || bending_stiffness > 0 || linear_density > 0; }
+};
+
 struct HarnessConfig {
   std::string path;                           ///< empty when no --config was given
   Vec3 gravity = Vec3(0, 0, -9.81);           ///< [m/s^2] model frame of the CAD file
@@ -127,6 +136,7 @@ struct HarnessConfig {
   /// keep from the solids a pattern names; when several match a solid, the largest applies.
   std::vector<std::pair<std::string, double>> solid_clearances;
   std::optional<MotionConfig> motion;
+  std::optional<ToleranceConfig> tolerances;
 
   /// [m] the min_clearance harness.json asks of solid `name`; 0 when none.
   double SolidMinClearance(const std::string& name) const;

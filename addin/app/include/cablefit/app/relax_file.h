@@ -13,6 +13,7 @@
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_clearance.h"
 #include "cablefit/app/relax_motion.h"
+#include "cablefit/app/relax_tolerance.h"
 
 namespace cablefit::addin {
 
@@ -63,6 +64,8 @@ struct RelaxedFile {
   std::vector<ClearancePair> clearances;
   /// The harness.json motion run on this input (RunFileMotion); unset without one.
   std::optional<FileMotion> motion;
+  /// The harness.json tolerance envelope run on this input (RunFileTolerance); unset without one.
+  std::optional<FileTolerance> tolerance;
 };
 
 /// Fills f->clearances from the relaxed cables (failed ones are left out) and the drawing's
