@@ -6,10 +6,12 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <sstream>
 
 #include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
+#include "cablefit/app/report_html.h"
 
 namespace cablefit::addin {
 namespace {
@@ -185,6 +187,21 @@ std::vector<std::string> ToleranceLines(const FileTolerance& t) {
   }
   for (const std::string& p : t.problems) lines.push_back(p);
   return lines;
+}
+
+std::string ToleranceReportSection(const std::vector<RelaxedFile>& files) {
+  std::ostringstream h;
+  bool any = false;
+  for (const RelaxedFile& f : files) {
+    if (!f.tolerance) continue;
+    if (!any) h << "<section class=\"card\"><h2>Tolerance envelope</h2><ul class=\"notes\">";
+    any = true;
+    for (const std::string& line : ToleranceLines(*f.tolerance))
+      h << "<li>" << HtmlEscape(f.stem) << ": " << HtmlEscape(line) << "</li>";
+  }
+  if (!any) return "";
+  h << "</ul><p>Per corner figures in the JSON's per-cable <code>tolerance</code>.</p></section>\n";
+  return h.str();
 }
 
 }  // namespace cablefit::addin

@@ -74,6 +74,9 @@ TEST(RelaxMotionCli, TheDoorOpensAndClosesAndTheCableComesBack) {
     return std::hypot(f[0].get<double>(), f[1].get<double>(), f[2].get<double>());
   };
   EXPECT_GT(std::abs(force(15) - force(0)), 1e-3);
+  const std::string report = testing::ReadTextFile(dir / "out" / "report.html");
+  EXPECT_NE(report.find("<h2>Motion</h2>"), std::string::npos);
+  EXPECT_NE(report.find("<h2>Clearance</h2>"), std::string::npos);
 }
 
 TEST(RelaxMotionCli, APoseReachedInOneStepOrInNineIsTheSameEquilibrium) {
@@ -146,6 +149,8 @@ TEST(RelaxMotionCli, TheLengthEnvelopeMatchesSingleRelaxesAtItsExtremes) {
   std::string text;
   const Json env = Relax(config, dir / "envelope", &text);
   EXPECT_NE(text.find("tolerance: door_hinge#1: max excursion"), std::string::npos) << text;
+  EXPECT_NE(testing::ReadTextFile(dir / "envelope" / "report.html").find("<h2>Tolerance envelope</h2>"),
+            std::string::npos);
   const Json& t = env["cables"][0]["tolerance"];
   ASSERT_EQ(t["corners"].size(), 2u);
   EXPECT_TRUE(t["interior_within_corners"].get<bool>());

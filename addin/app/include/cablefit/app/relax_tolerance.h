@@ -53,5 +53,7 @@ void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& opti
 json::Json CableToleranceToJson(const CableTolerance& t);
 /// One line per varied cable (and per problem) for stdout and the report.
 std::vector<std::string> ToleranceLines(const FileTolerance& t);
+/// The report's "Tolerance envelope" card (empty string when no input has tolerances).
+std::string ToleranceReportSection(const std::vector<RelaxedFile>& files);
 
 }  // namespace cablefit::addin
