@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-
 #include <sstream>
 
 #include "cablefit/app/relax_file.h"
@@ -41,9 +40,9 @@ std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& 
       p.other = s.name;
       p.hit = s.geometry->ToTube(*c.centreline, c.radius);
       p.required = std::max(c.min_clearance, s.min_clearance);
-      p.rests_on = std::find(c.clipped_to.begin(), c.clipped_to.end(), s.name) !=
-                       c.clipped_to.end() ||
-                   p.hit.clearance <= kRestingFraction * c.radius;
+      p.rests_on =
+          std::find(c.clipped_to.begin(), c.clipped_to.end(), s.name) != c.clipped_to.end() ||
+          p.hit.clearance <= kRestingFraction * c.radius;
       pairs.push_back(p);
     }
     for (size_t j = i + 1; j < cables.size(); ++j) {
@@ -82,8 +81,8 @@ std::string ClearanceViolationText(const ClearancePair& p) {
                 "%s to %s '%s': %.1f mm, less than the %.1f mm asked, at s=%.3f m (%.4f, %.4f, "
                 "%.4f) m",
                 p.cable.c_str(), p.other_is_solid ? "solid" : "cable", p.other.c_str(),
-                1e3 * p.hit.clearance, 1e3 * p.required, p.hit.s, p.hit.point.x(),
-                p.hit.point.y(), p.hit.point.z());
+                1e3 * p.hit.clearance, 1e3 * p.required, p.hit.s, p.hit.point.x(), p.hit.point.y(),
+                p.hit.point.z());
   return buf;
 }
 
@@ -96,7 +95,8 @@ std::vector<OrientedBox> ClearanceBoxes(const HarnessDrawing& drawing) {
 
 ClearanceCable ClearanceCableOf(const CableRelaxation& r, const Polyline* centreline,
                                 const HarnessDrawing& drawing,
-                                const std::vector<OrientedBox>& boxes, const HarnessConfig& config) {
+                                const std::vector<OrientedBox>& boxes,
+                                const HarnessConfig& config) {
   ClearanceCable c;
   c.name = r.setup.name;
   c.centreline = centreline;

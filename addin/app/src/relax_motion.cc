@@ -8,12 +8,12 @@
 #include <map>
 #include <sstream>
 
-#include "cablefit/core/base/errors.h"
-#include "cablefit/core/solver/motion_sweep.h"
 #include "cablefit/app/relax_clearance.h"
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/report_html.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/solver/motion_sweep.h"
 
 namespace cablefit::addin {
 namespace {
@@ -149,9 +149,9 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
     cm.moving = supports;
     const auto c0 = Clock::now();
     try {
-      const SweepSummary s =
-          SweepRod(relaxed.setup.spec, &relaxed.setup.route, supports,
-                   [&mc](double q) { return mc.At(q); }, fm.q, sweep_options);
+      const SweepSummary s = SweepRod(
+          relaxed.setup.spec, &relaxed.setup.route, supports, [&mc](double q) { return mc.At(q); },
+          fm.q, sweep_options);
       cm.branch_lost_pose = s.branch_lost_pose;
       cm.completed = s.completed;
       cm.message = s.message;
@@ -189,7 +189,8 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
         if (!f->cables[j] || static_cast<int>(j) == cm.cable) continue;
         const Polyline* other = &f->cables[j]->relaxed;
         for (const CableMotion& om : fm.cables)
-          if (om.cable == static_cast<int>(j) && i < om.poses.size()) other = &om.poses[i].centreline;
+          if (om.cable == static_cast<int>(j) && i < om.poses.size())
+            other = &om.poses[i].centreline;
         const ClearanceCable them =
             ClearanceCableOf(*f->cables[j], other, f->drawing, boxes, config);
         for (ClearancePair& p : MeasureClearances({me, them}, {})) pairs.push_back(p);
@@ -216,41 +217,47 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
     const int k = static_cast<int>(i);
     Json reactions = Json::array();
     for (const SupportReaction& r : p.reactions)
-      reactions.push_back({{"s", r.s}, {"force", json::ToJson(r.force)}, {"moment", json::ToJson(r.moment)}});
-    Json pj = {{"q", Shown(c, p.q)},
-               {"converged", p.converged},
-               {"stable", p.stable},
-               {"branch_lost", p.escaped_unstable || p.jumped},
-               {"min_bend_radius", {{"radius", json::NumberOrNull(p.min_bend_radius)},
-                                    {"s", p.min_bend_radius_s}, {"flag", p.bend_flag}}},
-               {"max_tension", {{"force", json::NumberOrNull(p.max_tension)}, {"s", p.max_tension_s}}},
-               {"reactions", reactions},
-               {"step", p.step},
-               {"iterations", p.newton_iterations}};
+      reactions.push_back(
+          {{"s", r.s}, {"force", json::ToJson(r.force)}, {"moment", json::ToJson(r.moment)}});
+    Json pj = {
+        {"q", Shown(c, p.q)},
+        {"converged", p.converged},
+        {"stable", p.stable},
+        {"branch_lost", p.escaped_unstable || p.jumped},
+        {"min_bend_radius",
+         {{"radius", json::NumberOrNull(p.min_bend_radius)},
+          {"s", p.min_bend_radius_s},
+          {"flag", p.bend_flag}}},
+        {"max_tension", {{"force", json::NumberOrNull(p.max_tension)}, {"s", p.max_tension_s}}},
+        {"reactions", reactions},
+        {"step", p.step},
+        {"iterations", p.newton_iterations}};
     // The shape at a few points per pose (the relaxed cable's own centreline has ~1 per mm).
     Json rows = Json::array();
-    const Polyline shape = SampleCenterline(p.centreline, UniformArcLengths(
-                                                              p.centreline.s[p.centreline.size() - 1],
-                                                              kPoseShapeSamples));
+    const Polyline shape = SampleCenterline(
+        p.centreline,
+        UniformArcLengths(p.centreline.s[p.centreline.size() - 1], kPoseShapeSamples));
     for (int k = 0; k < shape.size(); ++k)
       rows.push_back({shape.s[k], shape.points(0, k), shape.points(1, k), shape.points(2, k)});
     pj["centreline"] = {{"columns", {"s", "x", "y", "z"}}, {"rows", rows}};
     if (p.escaped_unstable || p.jumped)
       pj["how"] = p.escaped_unstable ? "unstable equilibrium" : "jump";
     if (p.clearance.found()) {
-      pj["clearance"] = {{"clearance", p.clearance.clearance},
-                         {"to", p.clearance_to},
-                         {"s", p.clearance.s},
-                         {"point", json::ToJson(p.clearance.point)},
-                         {"required", p.clearance_required},
-                         {"violation", p.clearance_required > 0 &&
-                                           p.clearance.clearance < p.clearance_required}};
+      pj["clearance"] = {
+          {"clearance", p.clearance.clearance},
+          {"to", p.clearance_to},
+          {"s", p.clearance.s},
+          {"point", json::ToJson(p.clearance.point)},
+          {"required", p.clearance_required},
+          {"violation", p.clearance_required > 0 && p.clearance.clearance < p.clearance_required}};
     }
     poses.push_back(pj);
-    if (worst_bend < 0 || p.min_bend_radius < m.poses[static_cast<size_t>(worst_bend)].min_bend_radius)
+    if (worst_bend < 0 ||
+        p.min_bend_radius < m.poses[static_cast<size_t>(worst_bend)].min_bend_radius)
       worst_bend = k;
     if (std::isfinite(p.max_tension) &&
-        (worst_tension < 0 || p.max_tension > m.poses[static_cast<size_t>(worst_tension)].max_tension))
+        (worst_tension < 0 ||
+         p.max_tension > m.poses[static_cast<size_t>(worst_tension)].max_tension))
       worst_tension = k;
     int support = -1;
     const double reaction = LargestReaction(p, &support);
@@ -274,8 +281,8 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
     worst["max_tension"] = HitJson(c, p, worst_tension, p.max_tension);
   }
   if (worst_reaction >= 0) {
-    worst["max_support_force"] = HitJson(c, m.poses[static_cast<size_t>(worst_reaction)],
-                                         worst_reaction, largest_reaction);
+    worst["max_support_force"] =
+        HitJson(c, m.poses[static_cast<size_t>(worst_reaction)], worst_reaction, largest_reaction);
     worst["max_support_force"]["support"] = largest_reaction_support;
   }
   if (worst_clearance >= 0) {
@@ -292,14 +299,10 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
   }
   Json moving = Json::array();
   for (int k : m.moving) moving.push_back(k);
-  return {{"name", c.name},
-          {"moving_supports", moving},
-          {"completed", m.completed},
-          {"message", m.message},
-          {"poses", poses},
-          {"worst", worst},
-          {"stability_lost", lost},
-          {"back_to_start", json::NumberOrNull(m.back_to_start)},
+  return {{"name", c.name},           {"moving_supports", moving},
+          {"completed", m.completed}, {"message", m.message},
+          {"poses", poses},           {"worst", worst},
+          {"stability_lost", lost},   {"back_to_start", json::NumberOrNull(m.back_to_start)},
           {"seconds", m.seconds}};
 }
 
@@ -335,9 +338,10 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
   const MotionConfig& c = m.config;
   for (const CableMotion& cm : m.cables) {
     char buf[1024];
-    int n = std::snprintf(buf, sizeof buf, "motion '%s' (%s %g..%g %s, %zu poses): %s: ",
-                          c.name.c_str(), c.KindName(), Shown(c, c.from), Shown(c, c.to),
-                          ShownUnit(c), cm.poses.size(), cm.name.c_str());
+    int n = std::snprintf(buf, sizeof buf,
+                          "motion '%s' (%s %g..%g %s, %zu poses): %s: ", c.name.c_str(),
+                          c.KindName(), Shown(c, c.from), Shown(c, c.to), ShownUnit(c),
+                          cm.poses.size(), cm.name.c_str());
     std::string text(buf, static_cast<size_t>(std::max(0, n)));
     if (cm.poses.empty()) {
       lines.push_back(text + "FAILED: " + cm.message);
@@ -357,7 +361,8 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
         largest = f;
         reaction = &p;
       }
-      if (p.clearance.found() && (!clearance || p.clearance.clearance < clearance->clearance.clearance))
+      if (p.clearance.found() &&
+          (!clearance || p.clearance.clearance < clearance->clearance.clearance))
         clearance = &p;
     }
     std::snprintf(buf, sizeof buf,
@@ -379,7 +384,8 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
     if (cm.branch_lost_pose >= 0) {
       const MotionPose& p = cm.poses[static_cast<size_t>(cm.branch_lost_pose)];
       std::snprintf(buf, sizeof buf, ", STABILITY LOST at pose %d (%g %s: %s)", cm.branch_lost_pose,
-                    Shown(c, p.q), ShownUnit(c), p.escaped_unstable ? "unstable equilibrium" : "jump");
+                    Shown(c, p.q), ShownUnit(c),
+                    p.escaped_unstable ? "unstable equilibrium" : "jump");
       text += buf;
     } else {
       text += ", stable throughout";

@@ -8,10 +8,10 @@
 #include <random>
 #include <sstream>
 
-#include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/report_html.h"
+#include "cablefit/core/solver/centerline_sampling.h"
 
 namespace cablefit::addin {
 namespace {
@@ -29,8 +29,8 @@ void Solve(const CableRelaxation& nominal, const SimulationOptions& options, Tol
   if (!r.converged) return;
   const Polyline a = SampleCenterline(nominal.result.solution.centerline,
                                       UniformArcLengths(spec.length, kCompareSamples));
-  const Polyline b = SampleCenterline(r.solution.centerline,
-                                      UniformArcLengths(varied.length, kCompareSamples));
+  const Polyline b =
+      SampleCenterline(r.solution.centerline, UniformArcLengths(varied.length, kCompareSamples));
   const Eigen::VectorXd d = (a.points - b.points).colwise().norm();
   Eigen::Index k = 0;
   c->excursion = d.maxCoeff(&k);
@@ -57,7 +57,8 @@ RodSpec VariedSpec(const RodSpec& spec, double length, double stiffness, double 
   return v;
 }
 
-void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f) {
+void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options,
+                      RelaxedFile* f) {
   if (!config.tolerances) return;
   FileTolerance ft;
   ft.config = *config.tolerances;
@@ -159,7 +160,9 @@ json::Json CableToleranceToJson(const CableTolerance& t) {
                    "bound it (interior_within_corners)"}};
   if (t.worst_corner >= 0) {
     const ToleranceCase& w = t.corners[static_cast<size_t>(t.worst_corner)];
-    j["max_excursion"] = {{"excursion", w.excursion}, {"s", w.s}, {"point", json::ToJson(w.point)},
+    j["max_excursion"] = {{"excursion", w.excursion},
+                          {"s", w.s},
+                          {"point", json::ToJson(w.point)},
                           {"corner", t.worst_corner}};
   } else {
     j["max_excursion"] = nullptr;

@@ -40,7 +40,8 @@ Polyline Bumped(const Polyline& c, double amplitude) {
     tangent.normalize();
     Vec3 side = fixed - fixed.dot(tangent) * tangent;
     if (side.norm() < 1e-6) side = tangent.unitOrthogonal();
-    out.points.col(i) += amplitude * std::sin(M_PI * (c.s[i] - c.s[0]) / length) * side.normalized();
+    out.points.col(i) +=
+        amplitude * std::sin(M_PI * (c.s[i] - c.s[0]) / length) * side.normalized();
   }
   return out;
 }
@@ -96,21 +97,24 @@ SweepSummary SweepRod(const RodSpec& base, const Polyline* initial, const std::v
     return out;
   }
   // Warm solve at p from the simulator's last state; sub-steps from `from` when it fails.
+  // Warm solve at p from the simulator's last state (`current`, at parameter `from`). When it
+  // fails, the simulator is put back on `current` (a failed solve leaves its state anywhere)
+  // and p is approached in sub-steps.
   auto solve = [&](double from, double p) {
     SimulationResult r = follow->Resimulate(spec_at(p));
     if (r.converged) return r;
-    for (int k = 1; k <= options.substeps; ++k) {
+    follow = std::make_unique<RodSimulator>(WithEscape(options.simulation, false));
+    r = follow->Simulate(spec_at(from), &current.solution.centerline);
+    for (int k = 1; k <= options.substeps && r.converged; ++k)
       r = follow->Resimulate(spec_at(from + (p - from) * k / options.substeps));
-      if (!r.converged) break;
-    }
     return r;
   };
   // Walk from the drawn pose to the first one (not reported).
   if (!q.empty() && q.front() != 0.0) {
     double largest = 0.0;
     for (size_t i = 1; i < q.size(); ++i) largest = std::max(largest, std::abs(q[i] - q[i - 1]));
-    const int n = largest > 0 ? std::max(1, static_cast<int>(std::ceil(std::abs(q.front()) / largest)))
-                              : 1;
+    const int n =
+        largest > 0 ? std::max(1, static_cast<int>(std::ceil(std::abs(q.front()) / largest))) : 1;
     for (int k = 1; k <= n && current.converged; ++k)
       current = solve(q.front() * (k - 1) / n, q.front() * k / n);
     if (!current.converged) {
@@ -125,12 +129,12 @@ SweepSummary SweepRod(const RodSpec& base, const Polyline* initial, const std::v
     pose.q = q[i];
     SimulationResult r = solve(previous_q, q[i]);
     if (!r.converged) {
-      out.message = "pose " + std::to_string(i) + " did not converge: " + r.solution.summary.message;
+      out.message =
+          "pose " + std::to_string(i) + " did not converge: " + r.solution.summary.message;
       break;
     }
     pose.step = LargestStep(r, current, base.length);
-    pose.jumped = i > 0 && previous_step > 0 &&
-                  pose.step > options.jump_factor * previous_step &&
+    pose.jumped = i > 0 && previous_step > 0 && pose.step > options.jump_factor * previous_step &&
                   pose.step > 10 * options.simulation.accuracy;
     if (!r.solution.summary.stable) {
       // The branch followed is unstable here: leave it for the nearest stable equilibrium and

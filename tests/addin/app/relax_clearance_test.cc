@@ -50,7 +50,8 @@ TEST(RelaxClearance, TheLargerMinClearanceOfThePairDecidesAViolation) {
   EXPECT_EQ(pairs[2].cable, "low");
   EXPECT_NEAR(pairs[2].hit.clearance, 0.007, 1e-12);
   EXPECT_TRUE(pairs[2].violation());  // 7 mm < the floor's 10 mm
-  EXPECT_NE(ClearanceViolationText(pairs[2]).find("7.0 mm, less than the 10.0 mm"), std::string::npos);
+  EXPECT_NE(ClearanceViolationText(pairs[2]).find("7.0 mm, less than the 10.0 mm"),
+            std::string::npos);
   // The cable's own min_clearance counts too, when larger.
   cables[0].min_clearance = 0.3;
   pairs = MeasureClearances(cables, solids);
@@ -101,7 +102,8 @@ TEST(RelaxClearance, HarnessJsonAsksPerCableAndPerSolid) {
   const HarnessConfig h = ReadHarnessConfig(path);
   EXPECT_DOUBLE_EQ(h.For("hot").min_clearance.value(), 0.05);
   EXPECT_DOUBLE_EQ(h.For("other").min_clearance.value(), 0.01);
-  EXPECT_DOUBLE_EQ(h.SolidMinClearance("exhaust_pipe"), 0.08);  // the largest of the matching patterns
+  EXPECT_DOUBLE_EQ(h.SolidMinClearance("exhaust_pipe"),
+                   0.08);  // the largest of the matching patterns
   EXPECT_DOUBLE_EQ(h.SolidMinClearance("bracket"), 0.002);
   for (const char* bad : {R"({"default": {"min_clearance": -0.01}})",
                           R"({"solids": {"x": {"min_clearance": "NaN"}}})",

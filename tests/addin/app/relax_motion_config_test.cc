@@ -59,30 +59,44 @@ TEST(RelaxMotionConfig, ARailTranslatesOneWayWhenReturnIsOff) {
 
 TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
   const std::string moving = R"("moving": [{"cable": "c", "support": "end"}])";
-  const std::string hinge = R"("rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, 45]})";
-  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 0], "point": [0, 0, 0], "angles": [0, 45]}, )" + moving + "}")
-                .find("motion.rotation.axis"), std::string::npos);
-  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [10, 10]}, )" + moving + "}")
-                .find("angles"), std::string::npos);
-  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, "NaN"]}, )" + moving + "}")
-                .find("angles"), std::string::npos);
-  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, 720]}, )" + moving + "}")
-                .find("angles"), std::string::npos);
+  const std::string hinge =
+      R"("rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, 45]})";
+  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 0], "point": [0, 0, 0], "angles": [0, 45]}, )" +
+                  moving + "}")
+                .find("motion.rotation.axis"),
+            std::string::npos);
+  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [10, 10]}, )" +
+                  moving + "}")
+                .find("angles"),
+            std::string::npos);
+  EXPECT_NE(
+      Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, "NaN"]}, )" +
+            moving + "}")
+          .find("angles"),
+      std::string::npos);
+  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, 720]}, )" +
+                  moving + "}")
+                .find("angles"),
+            std::string::npos);
   for (const char* steps : {"-3", "0", "2.5", "\"10\""})
-    EXPECT_NE(Error("{" + hinge + ", \"steps\": " + steps + ", " + moving + "}").find("motion.steps"),
-              std::string::npos)
+    EXPECT_NE(
+        Error("{" + hinge + ", \"steps\": " + steps + ", " + moving + "}").find("motion.steps"),
+        std::string::npos)
         << steps;
   EXPECT_NE(Error("{" + hinge + ", \"moving\": []}").find("motion.moving"), std::string::npos);
-  EXPECT_NE(Error("{" + hinge + R"(, "moving": [{"cable": "c", "support": "middle"}]})").find("support"),
-            std::string::npos);
+  EXPECT_NE(
+      Error("{" + hinge + R"(, "moving": [{"cable": "c", "support": "middle"}]})").find("support"),
+      std::string::npos);
   EXPECT_NE(Error("{" + hinge + R"(, "moving": [{"cable": "c", "support": -1}]})").find("support"),
             std::string::npos);
   EXPECT_NE(Error("{" + moving + "}").find("exactly one"), std::string::npos);
-  EXPECT_NE(Error("{" + hinge + R"(, "translation": {"direction": [1, 0, 0], "distances": [0, 1]}, )" +
-                  moving + "}")
-                .find("exactly one"),
+  EXPECT_NE(
+      Error("{" + hinge + R"(, "translation": {"direction": [1, 0, 0], "distances": [0, 1]}, )" +
+            moving + "}")
+          .find("exactly one"),
+      std::string::npos);
+  EXPECT_NE(Error("{" + hinge + ", \"speed\": 3, " + moving + "}").find("speed"),
             std::string::npos);
-  EXPECT_NE(Error("{" + hinge + ", \"speed\": 3, " + moving + "}").find("speed"), std::string::npos);
 }
 
 TEST(RelaxToleranceConfig, FractionsAreReadAndImpossibleOnesRefused) {
@@ -94,9 +108,10 @@ TEST(RelaxToleranceConfig, FractionsAreReadAndImpossibleOnesRefused) {
   EXPECT_DOUBLE_EQ(h.tolerances->length, 0.02);
   EXPECT_DOUBLE_EQ(h.tolerances->bending_stiffness, 0.3);
   EXPECT_DOUBLE_EQ(h.tolerances->linear_density, 0.0);
-  for (const char* bad : {R"({"tolerances": {"length": -0.02}})", R"({"tolerances": {"length": 0.5}})",
-                          R"({"tolerances": {"bending_stiffness": 0.95}})", R"({"tolerances": {}})",
-                          R"({"tolerances": {"length": "2%"}})", R"({"tolerances": {"clips": 0.01}})"}) {
+  for (const char* bad :
+       {R"({"tolerances": {"length": -0.02}})", R"({"tolerances": {"length": 0.5}})",
+        R"({"tolerances": {"bending_stiffness": 0.95}})", R"({"tolerances": {}})",
+        R"({"tolerances": {"length": "2%"}})", R"({"tolerances": {"clips": 0.01}})"}) {
     std::ofstream(path) << bad;
     EXPECT_THROW(ReadHarnessConfig(path), FileError) << bad;
   }

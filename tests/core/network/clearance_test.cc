@@ -32,7 +32,8 @@ TriangleMesh Box(const Vec3& lo, const Vec3& hi) {
   TriangleMesh m;
   m.vertices.resize(3, 8);
   for (int k = 0; k < 8; ++k)
-    m.vertices.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+    m.vertices.col(k) =
+        Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
   // Two triangles per face, counter-clockwise seen from outside.
   const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                            {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
@@ -98,7 +99,8 @@ TEST(ClearanceTest, SkewCablesAreLineDistanceMinusRadii) {
   for (int i = 0; i < 5; ++i) pb.col(i) = Vec3(0.3, -0.23 + 0.1 * i, 0.1 - 0.23 + 0.1 * i);
   const Polyline a = FromPoints(pa), b = FromPoints(pb);
   const Vec3 d1(1, 0, 0), d2 = Vec3(0, 1, 1).normalized();
-  const double line_distance = std::abs((Vec3(0.3, 0, 0.1)).dot(d1.cross(d2))) / d1.cross(d2).norm();
+  const double line_distance =
+      std::abs((Vec3(0.3, 0, 0.1)).dot(d1.cross(d2))) / d1.cross(d2).norm();
   const double ra = 0.004, rb = 0.006;
   const ClearanceHit hit = TubeToTubeClearance(a, ra, {}, b, rb, {});
   EXPECT_NEAR(hit.clearance, line_distance - ra - rb, 1e-12);

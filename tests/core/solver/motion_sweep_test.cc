@@ -64,14 +64,16 @@ std::vector<double> ThereAndBack(double to, int steps) {
 
 double LargestDistance(const Polyline& a, const Polyline& b, double length) {
   const Eigen::VectorXd s = UniformArcLengths(length, 301);
-  return (SampleCenterline(a, s).points - SampleCenterline(b, s).points).colwise().norm().maxCoeff();
+  return (SampleCenterline(a, s).points - SampleCenterline(b, s).points)
+      .colwise()
+      .norm()
+      .maxCoeff();
 }
 
 TEST(MotionSweep, AHingeSwungOutAndBackReturnsTheCableToItsStartShape) {
   const RodSpec spec = DoorCable();
   const std::vector<double> q = ThereAndBack(60 * M_PI / 180, 12);
-  const SweepSummary sweep =
-      SweepRod(spec, nullptr, {1}, Hinge, q);
+  const SweepSummary sweep = SweepRod(spec, nullptr, {1}, Hinge, q);
   ASSERT_TRUE(sweep.completed) << sweep.message;
   ASSERT_EQ(sweep.poses.size(), q.size());
   EXPECT_EQ(sweep.branch_lost_pose, -1);
@@ -89,8 +91,7 @@ TEST(MotionSweep, EveryPoseEqualsAColdSolveOfThatPose) {
   const RodSpec spec = DoorCable();
   const std::vector<double> q = {0.0, 0.3, 0.6, 0.9};
   SweepOptions options;
-  const SweepSummary sweep =
-      SweepRod(spec, nullptr, {1}, Hinge, q, options);
+  const SweepSummary sweep = SweepRod(spec, nullptr, {1}, Hinge, q, options);
   ASSERT_TRUE(sweep.completed) << sweep.message;
   for (size_t i = 0; i < q.size(); ++i) {
     RodSimulator cold(options.simulation);
@@ -104,8 +105,8 @@ TEST(MotionSweep, EveryPoseEqualsAColdSolveOfThatPose) {
               tol)
         << "pose " << i;
     for (size_t k = 0; k < r.solution.reactions.size(); ++k)
-      EXPECT_LT((r.solution.reactions[k].force -
-                 sweep.poses[i].result.solution.reactions[k].force).norm(),
+      EXPECT_LT((r.solution.reactions[k].force - sweep.poses[i].result.solution.reactions[k].force)
+                    .norm(),
                 1e-4)
           << "pose " << i;
   }
@@ -122,8 +123,10 @@ TEST(MotionSweep, PushingAClampedClampedRodLosesTheStraightBranchPastTheEulerLoa
   spec.material.diameter = 0.005;
   spec.material.axial_stiffness = 1e3;
   spec.gravity = Vec3::Zero();
-  spec.supports = {Clamp(0.0, Vec3::Zero(), Vec3::UnitX()), Clamp(1.0, Vec3::UnitX(), Vec3::UnitX())};
-  const double euler = 4 * M_PI * M_PI * spec.material.bending_stiffness / (spec.length * spec.length);
+  spec.supports = {Clamp(0.0, Vec3::Zero(), Vec3::UnitX()),
+                   Clamp(1.0, Vec3::UnitX(), Vec3::UnitX())};
+  const double euler =
+      4 * M_PI * M_PI * spec.material.bending_stiffness / (spec.length * spec.length);
   const double delta_cr = euler * spec.length / spec.material.axial_stiffness;
   std::vector<double> q;  // 0.1, 0.3, ..., 1.9 times delta_cr: the 6th pose (1.1) is the first past
   for (int i = 0; i < 10; ++i) q.push_back((0.1 + 0.2 * i) * delta_cr);

@@ -149,8 +149,9 @@ TEST(RelaxMotionCli, TheLengthEnvelopeMatchesSingleRelaxesAtItsExtremes) {
   std::string text;
   const Json env = Relax(config, dir / "envelope", &text);
   EXPECT_NE(text.find("tolerance: door_hinge#1: max excursion"), std::string::npos) << text;
-  EXPECT_NE(testing::ReadTextFile(dir / "envelope" / "report.html").find("<h2>Tolerance envelope</h2>"),
-            std::string::npos);
+  EXPECT_NE(
+      testing::ReadTextFile(dir / "envelope" / "report.html").find("<h2>Tolerance envelope</h2>"),
+      std::string::npos);
   const Json& t = env["cables"][0]["tolerance"];
   ASSERT_EQ(t["corners"].size(), 2u);
   EXPECT_TRUE(t["interior_within_corners"].get<bool>());
@@ -168,7 +169,8 @@ TEST(RelaxMotionCli, TheLengthEnvelopeMatchesSingleRelaxesAtItsExtremes) {
     double largest = 0.0;
     for (int i = 0; i <= 200; ++i) {
       const double u = i / 200.0;
-      largest = std::max(largest, (AtFraction(nominal, u) - AtFraction(one["cables"][0], u)).norm());
+      largest =
+          std::max(largest, (AtFraction(nominal, u) - AtFraction(one["cables"][0], u)).norm());
     }
     // Both sides interpolate ~1 mm output rows: agreement to well under the sampling error.
     EXPECT_NEAR(corner["excursion"].get<double>(), largest, 2e-5) << fraction;

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/core/network/clearance.h"
-#include "cablefit/formats/json_util.h"
 #include "cablefit/app/harness_config.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_clips.h"
+#include "cablefit/core/network/clearance.h"
+#include "cablefit/formats/json_util.h"
 
 namespace cablefit::addin {
 
@@ -34,8 +34,8 @@ struct ClearanceSolid {
 struct ClearancePair {
   std::string cable, other;
   bool other_is_solid = true;
-  ClearanceHit hit;        ///< s and point on `cable`; other_s on `other` for cable pairs
-  double required = 0.0;   ///< [m] the larger min_clearance of the two
+  ClearanceHit hit;       ///< s and point on `cable`; other_s on `other` for cable pairs
+  double required = 0.0;  ///< [m] the larger min_clearance of the two
   /// The cable rests on the solid (one of its supports lies in the solid's bounding box, or it
   /// touches it: clearance within kRestingFraction of its radius): contact there is intended.
   bool rests_on = false;

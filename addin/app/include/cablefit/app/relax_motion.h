@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/core/network/clearance.h"
-#include "cablefit/core/solver/rod_solution.h"
-#include "cablefit/core/solver/rod_simulation.h"
-#include "cablefit/formats/json_util.h"
 #include "cablefit/app/harness_config.h"
+#include "cablefit/core/network/clearance.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/core/solver/rod_solution.h"
+#include "cablefit/formats/json_util.h"
 
 namespace cablefit::addin {
 
@@ -21,12 +21,12 @@ struct MotionPose {
   double q = 0.0;  ///< [rad] or [m]
   bool converged = false, stable = false;
   bool escaped_unstable = false, jumped = false;  ///< the followed branch ended here (and how)
-  double step = 0.0;                  ///< [m] largest centreline move from the previous pose
-  double min_bend_radius = 0.0;       ///< [m] (infinity when straight)
-  double min_bend_radius_s = 0.0;     ///< [m]
-  bool bend_flag = false;             ///< tighter than the cable's limit
-  double max_tension = 0.0;           ///< [N]
-  double max_tension_s = 0.0;         ///< [m]
+  double step = 0.0;                       ///< [m] largest centreline move from the previous pose
+  double min_bend_radius = 0.0;            ///< [m] (infinity when straight)
+  double min_bend_radius_s = 0.0;          ///< [m]
+  bool bend_flag = false;                  ///< tighter than the cable's limit
+  double max_tension = 0.0;                ///< [N]
+  double max_tension_s = 0.0;              ///< [m]
   std::vector<SupportReaction> reactions;  ///< per support of the set-up, in order
   /// Least clearance to a solid it does not rest on or another cable (other cables at the same
   /// pose); `clearance_to` names it, `clearance_required` [m] is what harness.json asks.
@@ -39,13 +39,13 @@ struct MotionPose {
 
 /// The sweep of one cable.
 struct CableMotion {
-  int cable = 0;               ///< drawing cable index
+  int cable = 0;  ///< drawing cable index
   std::string name;
-  std::vector<int> moving;     ///< indices of the set-up's supports that move
+  std::vector<int> moving;  ///< indices of the set-up's supports that move
   std::vector<MotionPose> poses;
-  int branch_lost_pose = -1;   ///< first pose where the followed branch ended, -1 = never
+  int branch_lost_pose = -1;  ///< first pose where the followed branch ended, -1 = never
   bool completed = false;
-  std::string message;         ///< why the sweep stopped early
+  std::string message;  ///< why the sweep stopped early
   /// [m] largest distance between the first and the last pose's centreline (there and back:
   /// 0 up to solver accuracy unless the branch was lost); NaN when not there and back.
   double back_to_start = 0.0;
@@ -55,9 +55,9 @@ struct CableMotion {
 /// The motion of one input.
 struct FileMotion {
   MotionConfig config;
-  std::vector<double> q;                ///< the pose parameters
-  std::vector<CableMotion> cables;      ///< swept cables, in drawing order
-  std::vector<std::string> problems;    ///< moving supports that could not be swept, one line each
+  std::vector<double> q;              ///< the pose parameters
+  std::vector<CableMotion> cables;    ///< swept cables, in drawing order
+  std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
   double seconds = 0.0;
 };
 

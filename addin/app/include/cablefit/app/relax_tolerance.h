@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "cablefit/app/harness_config.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/json_util.h"
-#include "cablefit/app/harness_config.h"
 
 namespace cablefit::addin {
 
@@ -19,8 +19,8 @@ namespace cablefit::addin {
 struct ToleranceCase {
   double length = 0.0, bending_stiffness = 0.0, linear_density = 0.0;  ///< signed fractions
   bool converged = false;
-  double excursion = 0.0;  ///< [m] largest distance to the nominal shape at the same s / L
-  double s = 0.0;          ///< [m] nominal arc length where it is largest
+  double excursion = 0.0;     ///< [m] largest distance to the nominal shape at the same s / L
+  double s = 0.0;             ///< [m] nominal arc length where it is largest
   Vec3 point = Vec3::Zero();  ///< [m] the varied cable's point there
 };
 
@@ -28,8 +28,8 @@ struct CableTolerance {
   int cable = 0;
   std::string name;
   std::vector<ToleranceCase> corners, interior;
-  int worst_corner = -1;           ///< index into corners, -1 when none converged
-  bool interior_within = true;     ///< no interior case went further than the worst corner
+  int worst_corner = -1;        ///< index into corners, -1 when none converged
+  bool interior_within = true;  ///< no interior case went further than the worst corner
   double seconds = 0.0;
 };
 
@@ -48,7 +48,8 @@ inline constexpr int kInteriorChecks = 8;
 
 struct RelaxedFile;
 /// Runs the envelope on every relaxed cable of `f` solved alone (not a network).
-void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f);
+void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options,
+                      RelaxedFile* f);
 
 json::Json CableToleranceToJson(const CableTolerance& t);
 /// One line per varied cable (and per problem) for stdout and the report.

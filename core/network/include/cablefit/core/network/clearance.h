@@ -21,10 +21,10 @@ namespace cablefit {
 struct ClearanceHit {
   /// [m] surface-to-surface distance; < 0 when they overlap; +infinity when nothing was measured.
   double clearance = std::numeric_limits<double>::infinity();
-  double s = 0.0;                 ///< [m] arc length on the cable
-  Vec3 point = Vec3::Zero();      ///< [m] the centreline point there
-  Vec3 other = Vec3::Zero();      ///< [m] the nearest point of the solid, or the other centreline
-  double other_s = 0.0;           ///< [m] arc length on the other cable (cable pairs only)
+  double s = 0.0;             ///< [m] arc length on the cable
+  Vec3 point = Vec3::Zero();  ///< [m] the centreline point there
+  Vec3 other = Vec3::Zero();  ///< [m] the nearest point of the solid, or the other centreline
+  double other_s = 0.0;       ///< [m] arc length on the other cable (cable pairs only)
   bool found() const { return clearance < std::numeric_limits<double>::infinity(); }
 };
 

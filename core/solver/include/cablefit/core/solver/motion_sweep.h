@@ -37,15 +37,15 @@ struct SweepOptions {
 };
 
 struct SweepPose {
-  double q = 0.0;            ///< motion parameter [rad] or [m]
-  SimulationResult result;   ///< the equilibrium reported at this pose (stable branch if escaped)
+  double q = 0.0;           ///< motion parameter [rad] or [m]
+  SimulationResult result;  ///< the equilibrium reported at this pose (stable branch if escaped)
   bool converged = false;
-  bool stable = false;       ///< of the reported equilibrium
+  bool stable = false;  ///< of the reported equilibrium
   /// The branch followed so far ended here: the warm solve found an unstable equilibrium
   /// (`escaped_unstable`) or jumped (`jumped`).
   bool escaped_unstable = false;
   bool jumped = false;
-  double step = 0.0;         ///< [m] largest centreline displacement from the previous pose
+  double step = 0.0;  ///< [m] largest centreline displacement from the previous pose
 };
 
 struct SweepSummary {
