@@ -309,6 +309,18 @@ harness_entry('harness-section-missing',
 harness_entry('harness-not-object', '"just a string"', 'object')
 harness_entry('harness-duplicate-key', '{"gravity": [0, 0, -9.81], "gravity": [0, 0, 9.81]}',
               'appears twice')
+_hinge = {'axis': [0, 0, 1], 'point': [0, 0, 0], 'angles': [0, 45]}
+_moving = [{'cable': 'bent_tubes#1', 'support': 'end'}]
+harness_entry('harness-min-clearance-negative', {'default': {'min_clearance': -0.01}},
+              'min_clearance')
+harness_entry('harness-motion-zero-axis',
+              {'motion': {'rotation': dict(_hinge, axis=[0, 0, 0]), 'moving': _moving}},
+              'motion.rotation.axis must be a non-zero direction')
+harness_entry('harness-motion-steps-negative',
+              {'motion': {'rotation': _hinge, 'steps': -4, 'moving': _moving}}, 'motion.steps')
+harness_entry('harness-motion-angle-nan',
+              '{"motion": {"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], '
+              '"angles": [0, NaN]}, "moving": []}}', 'not valid JSON')
 
 # ---------------------------------------------------------------- CAD and meshes (relax) ---
 def cad_entry(id_, name, data, message, exit_code=2):

@@ -2,6 +2,7 @@
 
 #include <fnmatch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -136,8 +137,8 @@ CableLength ReadLength(const FieldReader& r, bool is_default) {
 }
 
 CableConfig ReadCable(const FieldReader& r, bool is_default) {
-  std::set<std::string> keys = {"material", "diameter",   "gravity", "start",
-                                "end",      "auto_clips", "length",  "note"};
+  std::set<std::string> keys = {"material",   "diameter", "gravity", "start",        "end",
+                                "auto_clips", "length",   "note",    "min_clearance"};
   if (!is_default) keys.insert("supports");
   RequireKnownKeys(r, keys);
   CableConfig c;
@@ -148,6 +149,7 @@ CableConfig ReadCable(const FieldReader& r, bool is_default) {
   if (r.Has("start")) c.start = ReadEnd(r, "start");
   if (r.Has("end")) c.end = ReadEnd(r, "end");
   if (r.Has("auto_clips")) c.auto_clips = OptionalBool(r, "auto_clips", true);
+  if (r.Has("min_clearance")) c.min_clearance = r.RequireNonNegative("min_clearance");
   if (r.Has("supports")) {
     const Json& list = r.RequireArray("supports");
     for (size_t i = 0; i < list.size(); ++i) {
@@ -192,6 +194,78 @@ std::vector<std::string> ReadPatterns(const FieldReader& r, const std::string& k
   return patterns;
 }
 
+// A unit vector from a non-zero finite one.
+Vec3 RequireDirection(const FieldReader& r, const std::string& key) {
+  const Vec3 v = r.RequireVec3(key);
+  if (!(v.norm() > 1e-12) || !v.allFinite()) r.Fail(key, "must be a non-zero direction");
+  return v.normalized();
+}
+
+// [from, to] of finite numbers that differ.
+void ReadRange(const FieldReader& r, const std::string& key, double scale, double max_span,
+               const char* max_text, MotionConfig* m) {
+  const Json& v = r.RequireArray(key);
+  if (v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+    r.Fail(key, "must be [from, to], got " + json::Describe(v));
+  const double from = v[0].get<double>(), to = v[1].get<double>();
+  if (!std::isfinite(from) || !std::isfinite(to) || from == to)
+    r.Fail(key, "must be two different finite numbers");
+  if (std::abs(to - from) > max_span || std::abs(from) > max_span || std::abs(to) > max_span)
+    r.Fail(key, std::string("must stay within ") + max_text);
+  m->from = scale * from;
+  m->to = scale * to;
+}
+
+MotionConfig ReadMotion(const FieldReader& r) {
+  RequireKnownKeys(r, {"name", "rotation", "translation", "steps", "return", "moving", "note"});
+  MotionConfig m;
+  if (r.Has("name")) m.name = r.RequireString("name");
+  if (r.Has("rotation") == r.Has("translation"))
+    r.FailHere("needs exactly one of \"rotation\" or \"translation\"");
+  if (r.Has("rotation")) {
+    const FieldReader rot = r.Child("rotation");
+    RequireKnownKeys(rot, {"axis", "point", "angles", "note"});
+    m.kind = MotionConfig::Kind::kRotation;
+    m.axis = RequireDirection(rot, "axis");
+    m.point = rot.RequireVec3("point");
+    ReadRange(rot, "angles", M_PI / 180, 360, "+-360 degrees", &m);
+  } else {
+    const FieldReader tr = r.Child("translation");
+    RequireKnownKeys(tr, {"direction", "distances", "note"});
+    m.kind = MotionConfig::Kind::kTranslation;
+    m.axis = RequireDirection(tr, "direction");
+    ReadRange(tr, "distances", 1.0, 100, "+-100 m", &m);
+  }
+  if (r.Has("steps")) {
+    const Json& v = r.object().at("steps");
+    // A sweep of more poses than this is a typo, not a study (each pose is a solve).
+    if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000)
+      r.Fail("steps", "must be a whole number from 1 to 100000, got " + json::Describe(v));
+    m.steps = static_cast<int>(v.get<long long>());
+  }
+  m.there_and_back = OptionalBool(r, "return", true);
+  const Json& list = r.RequireArray("moving");
+  if (list.empty()) r.Fail("moving", "must list at least one moving support");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const FieldReader e(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "moving"), i));
+    RequireKnownKeys(e, {"cable", "support"});
+    MotionConfig::MovingSupport ms;
+    ms.cable = e.RequireString("cable");
+    if (!e.Has("support")) e.Fail("support", "is missing (\"start\", \"end\" or an index)");
+    const Json& at = e.object().at("support");
+    if (at.is_string() && (at.get<std::string>() == "start" || at.get<std::string>() == "end")) {
+      ms.at = at.get<std::string>();
+    } else if (at.is_number_integer() && at.get<long long>() >= 0 && at.get<long long>() < 100000) {
+      ms.index = static_cast<int>(at.get<long long>());
+    } else {
+      e.Fail("support", "must be \"start\", \"end\" or a support index (0, 1, ...), got " +
+                            json::Describe(at));
+    }
+    m.supports.push_back(ms);
+  }
+  return m;
+}
+
 bool Matches(const std::string& pattern, const std::string& name) {
   return ::fnmatch(pattern.c_str(), name.c_str(), 0) == 0;
 }
@@ -225,6 +299,7 @@ CableConfig HarnessConfig::For(const std::string& name) const {
   Overlay(&c.start, top.start);
   Overlay(&c.end, top.end);
   Overlay(&c.auto_clips, top.auto_clips);
+  Overlay(&c.min_clearance, top.min_clearance);
   if (top.min_bend_radius) {
     c.min_bend_radius = top.min_bend_radius;
     c.min_bend_radius_source = top.min_bend_radius_source;
@@ -245,6 +320,7 @@ CableConfig Overlaid(CableConfig base, const CableConfig& top) {
   Overlay(&base.start, top.start);
   Overlay(&base.end, top.end);
   Overlay(&base.auto_clips, top.auto_clips);
+  Overlay(&base.min_clearance, top.min_clearance);
   if (top.min_bend_radius) {
     base.min_bend_radius = top.min_bend_radius;
     base.min_bend_radius_source = top.min_bend_radius_source;
@@ -272,6 +348,40 @@ std::string CableLength::ToString() const {
   return "drawn";
 }
 
+double HarnessConfig::SolidMinClearance(const std::string& name) const {
+  // JSON objects carry no order, so no "first match": the safe side, the largest, applies.
+  double largest = 0.0;
+  for (const auto& [pattern, clearance] : solid_clearances)
+    if (Matches(pattern, name)) largest = std::max(largest, clearance);
+  return largest;
+}
+
+Eigen::Isometry3d MotionConfig::At(double q) const {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  if (kind == Kind::kTranslation) {
+    t.translation() = q * axis;
+    return t;
+  }
+  // x -> point + R (x - point)
+  t.linear() = Eigen::AngleAxisd(q, axis).toRotationMatrix();
+  t.translation() = point - t.linear() * point;
+  return t;
+}
+
+std::vector<double> MotionConfig::Poses() const {
+  std::vector<double> q;
+  // Each parameter from its integer step (not by adding increments), so that the way back
+  // passes exactly the same poses as the way there.
+  for (int i = 0; i <= steps; ++i) q.push_back(from + (to - from) * i / steps);
+  if (there_and_back)
+    for (int i = steps - 1; i >= 0; --i) q.push_back(from + (to - from) * i / steps);
+  return q;
+}
+
+const char* MotionConfig::KindName() const {
+  return kind == Kind::kRotation ? "rotation" : "translation";
+}
+
 std::string HarnessConfig::RigidReason(const std::string& name) const {
   for (const std::string& p : rigid)
     if (Matches(p, name)) return "a rigid part by harness.json (\"rigid\": \"" + p + "\")";
@@ -290,7 +400,8 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   }
   const FieldReader r(root, path);
   RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
-                       "junctions", "junction_defaults", "rigid", "only", "note"});
+                       "junctions", "junction_defaults", "rigid", "only", "note", "solids",
+                       "motion", "tolerances"});
   if (r.Has("format") && r.RequireString("format") != "cablefit-harness/1") {
     r.Fail("format", "must be \"cablefit-harness/1\"");
   }
@@ -313,6 +424,35 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
     RequireKnownKeys(d, {"compliance", "mass", "note"});
     if (d.Has("compliance")) h.junction_compliance = d.RequireNonNegative("compliance");
     if (d.Has("mass")) h.junction_mass = d.RequireNonNegative("mass");
+  }
+  if (r.Has("solids")) {
+    const FieldReader solids = r.Child("solids");
+    for (auto it = solids.object().begin(); it != solids.object().end(); ++it) {
+      const FieldReader one = solids.Child(it.key());
+      RequireKnownKeys(one, {"min_clearance", "note"});
+      if (it.key().empty()) solids.Fail(it.key(), "a solid name pattern must not be empty");
+      h.solid_clearances.emplace_back(it.key(), one.RequireNonNegative("min_clearance"));
+    }
+  }
+  if (r.Has("motion")) h.motion = ReadMotion(r.Child("motion"));
+  if (r.Has("tolerances")) {
+    const FieldReader t = r.Child("tolerances");
+    RequireKnownKeys(t, {"length", "bending_stiffness", "linear_density", "note"});
+    ToleranceConfig tc;
+    // Fractions: beyond these it is another cable, not a tolerance (and EI or the mass would
+    // reach zero).
+    auto fraction = [&t](const std::string& key, double most) {
+      if (!t.Has(key)) return 0.0;
+      const double x = t.RequireNonNegative(key);
+      if (x >= most) t.Fail(key, "must be a fraction below " + std::to_string(most).substr(0, 3) +
+                                     " (0.02 = +-2 %)");
+      return x;
+    };
+    tc.length = fraction("length", 0.5);
+    tc.bending_stiffness = fraction("bending_stiffness", 0.9);
+    tc.linear_density = fraction("linear_density", 0.9);
+    if (!tc.any()) t.FailHere("must vary at least one of length, bending_stiffness, linear_density");
+    h.tolerances = tc;
   }
   if (r.Has("default")) h.defaults = ReadCable(r.Child("default"), /*is_default=*/true);
   if (r.Has("cables")) {

@@ -283,6 +283,12 @@ void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* out) {
     }
   }
   r.rms_deviation = std::sqrt(sum_sq / n);
+  MeasureBendAndTension(min_bend_radius_factor, out);
+}
+
+void MeasureBendAndTension(double min_bend_radius_factor, CableRelaxation* out) {
+  CableRelaxation& r = *out;
+  const RodSpec& spec = r.setup.spec;
 
   // Curvature from the turning of consecutive element tangents of the finest level.
   const RodSolution& sol = r.result.solution;

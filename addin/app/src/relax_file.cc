@@ -259,7 +259,41 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
         cables.back()["kbl"] = it->second;
     }
   }
+  // Per cable, its smallest clearance to anything it does not rest on (new in issue 25).
+  for (json::Json& c : cables) {
+    const ClearancePair* least = nullptr;
+    for (const ClearancePair& p : f.clearances) {
+      const std::string name = c["name"].get<std::string>();
+      if (p.rests_on || (p.cable != name && p.other != name)) continue;
+      if (!least || p.hit.clearance < least->hit.clearance) least = &p;
+    }
+    if (least) c["clearance"] = ClearancePairToJson(*least);
+  }
+  if (f.motion) {
+    for (const CableMotion& m : f.motion->cables)
+      cables[static_cast<size_t>(m.cable)]["motion"] = CableMotionToJson(m, f.motion->config);
+    j["motion"] = FileMotionToJson(*f.motion);
+  }
+  if (f.tolerance) {
+    for (const CableTolerance& t : f.tolerance->cables)
+      cables[static_cast<size_t>(t.cable)]["tolerance"] = CableToleranceToJson(t);
+    j["tolerance_problems"] = f.tolerance->problems;
+  }
   j["cables"] = cables;
+  json::Json pairs = json::Json::array();
+  int violations = 0;
+  for (const ClearancePair& p : f.clearances) {
+    pairs.push_back(ClearancePairToJson(p));
+    violations += p.violation() ? 1 : 0;
+  }
+  j["clearance"] = {
+      {"pairs", pairs},
+      {"violations", violations},
+      {"meaning",
+       "surface distance [m] of each relaxed cable (tube of its diameter) to each solid and each "
+       "other cable, where it is least: s and point on 'cable'; negative = overlap; rests_on = "
+       "the cable is clipped to or touches the solid (not a violation); violation = less than "
+       "'required', the larger min_clearance harness.json asks of the two"}};
   json::Json solids = json::Json::array();
   for (const DrawnSolid& s : f.drawing.solids) solids.push_back(s.name);
   j["solids"] = solids;

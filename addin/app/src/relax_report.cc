@@ -1,5 +1,8 @@
 #include "cablefit/app/relax_report.h"
 
+#include "cablefit/app/relax_clearance.h"
+#include "cablefit/app/relax_file.h"
+
 #include <cctype>
 #include <algorithm>
 #include <cmath>
@@ -322,6 +325,7 @@ void WriteRelaxReport(const std::string& path, const std::vector<RelaxedFile>& f
     for (const std::string& e : failures) h << "<li>" << HtmlEscape(e) << "</li>";
     h << "</ul></section>\n";
   }
+  h << ClearanceReportSection(files) << MotionReportSection(files) << ToleranceReportSection(files);
   for (const RelaxedFile& f : files) {
     if (f.picture.empty()) continue;
     h << "<section class=\"card\"><h2>" << HtmlEscape(f.stem) << "</h2><figure><a href=\""

@@ -12,6 +12,7 @@
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/case_reader.h"
+#include "bench_motion.h"
 
 namespace cablefit::addin {
 namespace {
@@ -165,6 +166,7 @@ int RunBench(const std::string& case_path, int reps) {
   }
   BenchNetwork(reps);
   BenchContact(reps);
+  BenchMotionSweep(spec, reps);
   return kExitOk;
 }
 

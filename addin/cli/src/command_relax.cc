@@ -271,6 +271,19 @@ int RunRelax(const RelaxArgs& a) {
   for (int k = 0; k < nj; ++k)
     files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].times.relax +=
         job_seconds[static_cast<size_t>(k)];
+  // Clearance of the relaxed cables (issue 25): the violations on stdout, all pairs in the JSON.
+  for (RelaxedFile& f : files) {
+    if (!f.read_ok) continue;
+    MeasureFileClearances(ConfigOf(f, config), &f);
+    for (const ClearancePair& p : f.clearances)
+      if (p.violation()) bar.PrintLine(stdout, f.stem + ": CLEARANCE: " + ClearanceViolationText(p));
+    RunFileMotion(ConfigOf(f, config), sim_options, &f);  // the harness.json motion, if any
+    if (f.motion)
+      for (const std::string& line : MotionLines(*f.motion)) bar.PrintLine(stdout, f.stem + ": " + line);
+    RunFileTolerance(ConfigOf(f, config), sim_options, &f);  // harness.json tolerances, if any
+    if (f.tolerance)
+      for (const std::string& line : ToleranceLines(*f.tolerance)) bar.PrintLine(stdout, f.stem + ": " + line);
+  }
 
   // 3. Write each input's outputs.
   RunBatch(n, ResolveJobs(a.jobs, n), [&](int i) {

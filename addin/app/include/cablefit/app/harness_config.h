@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "cablefit/core/rod/rod_spec.h"
 
 namespace cablefit::addin {
@@ -55,6 +57,9 @@ struct CableConfig {
   /// unset -> HarnessConfig::min_bend_radius_factor diameters. Not read from harness.json.
   std::optional<double> min_bend_radius;
   std::string min_bend_radius_source;  ///< where min_bend_radius came from
+  /// [m] the least surface distance the cable must keep from solids and other cables
+  /// ("min_clearance"); unset = none asked (clearances are still measured and reported).
+  std::optional<double> min_clearance;
 
   /// [m] the diameter a cable drawn with `drawn_diameter` (0: none) is relaxed with; 0 when
   /// neither the drawing nor harness.json gives one.
@@ -74,6 +79,44 @@ struct JunctionConfig {
   double mass = 0.0;         ///< [kg]
 };
 
+/// A motion of the harness ("motion" in harness.json): chosen supports follow a rigid motion
+/// (a door hinge: a rotation about an axis through a point; a seat rail: a translation) from
+/// `from` to `to` in `steps` equal steps and, when `there_and_back`, back again. The drawing is
+/// the pose at parameter 0.
+struct MotionConfig {
+  enum class Kind { kRotation, kTranslation };
+  std::string name = "motion";
+  Kind kind = Kind::kRotation;
+  Vec3 axis = Vec3::UnitZ();       ///< unit; rotation axis or translation direction
+  Vec3 point = Vec3::Zero();       ///< [m] a point on the rotation axis
+  double from = 0.0, to = 0.0;     ///< [rad] for a rotation, [m] for a translation
+  int steps = 10;                  ///< >= 1 poses after the first, each way
+  bool there_and_back = true;
+  /// One moving support: of cable `cable`, its "start", "end" or the index-th support of the
+  /// cable's set-up (the order of the relax JSON's "supports").
+  struct MovingSupport {
+    std::string cable;
+    std::string at;  ///< "start" or "end"; empty when `index` is used
+    int index = -1;
+  };
+  std::vector<MovingSupport> supports;
+  /// The rigid motion at parameter q ([rad] or [m]): maps a drawn point to its moved place.
+  Eigen::Isometry3d At(double q) const;
+  /// The parameters of the poses: from, ..., to (steps + 1) and, there and back, back to from.
+  std::vector<double> Poses() const;
+  /// "rotation" or "translation".
+  const char* KindName() const;
+};
+
+/// "tolerances": relative +- variations of every cable's length, bending (and torsional)
+/// stiffness and linear density; 0 = not varied. The tolerance envelope solves every corner.
+struct ToleranceConfig {
+  double length = 0.0;             ///< e.g. 0.02 = +-2 % of the built length
+  double bending_stiffness = 0.0;  ///< scales EI and GJ together
+  double linear_density = 0.0;
+  bool any() const { return length > 0 || bending_stiffness > 0 || linear_density > 0; }
+};
+
 struct HarnessConfig {
   std::string path;                           ///< empty when no --config was given
   Vec3 gravity = Vec3(0, 0, -9.81);           ///< [m/s^2] model frame of the CAD file
@@ -89,6 +132,14 @@ struct HarnessConfig {
   /// `rigid`, or none of `only` when `only` is given, is a rigid part (a pipe, a bar), not a
   /// cable: it is kept as a solid and never relaxed.
   std::vector<std::string> rigid, only;
+  /// "solids": {"<name pattern>": {"min_clearance": m}}: the least surface distance cables must
+  /// keep from the solids a pattern names; when several match a solid, the largest applies.
+  std::vector<std::pair<std::string, double>> solid_clearances;
+  std::optional<MotionConfig> motion;
+  std::optional<ToleranceConfig> tolerances;
+
+  /// [m] the min_clearance harness.json asks of solid `name`; 0 when none.
+  double SolidMinClearance(const std::string& name) const;
 
   /// `defaults` overlaid with the entry for `name` (if any).
   CableConfig For(const std::string& name) const;

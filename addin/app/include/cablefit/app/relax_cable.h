@@ -121,6 +121,9 @@ CableRelaxation RelaxCable(CableSetup setup, const SimulationOptions& options,
 
 /// Fills relaxed, deviation and bend radius from `r->result` (its centreline and frames).
 void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* r);
+/// The part of MeasureRelaxation that needs no drawn route: min bend radius (and flag), max
+/// tension, stretches (what a motion sweep measures at every pose).
+void MeasureBendAndTension(double min_bend_radius_factor, CableRelaxation* r);
 
 /// Samples along a relaxed cable for output (at least 201, about one per millimetre up to 2001).
 int OutputSamples(double length);  // length [m]

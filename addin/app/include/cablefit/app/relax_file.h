@@ -11,6 +11,9 @@
 #include "cablefit/formats/harness_drawing.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/relax_cable.h"
+#include "cablefit/app/relax_clearance.h"
+#include "cablefit/app/relax_motion.h"
+#include "cablefit/app/relax_tolerance.h"
 
 namespace cablefit::addin {
 
@@ -57,7 +60,17 @@ struct RelaxedFile {
   /// By cable name, what the input itself says about the cable (KBL: the "kbl" object).
   std::map<std::string, json::Json> cable_json;
   std::vector<std::string> notes;      ///< what reading the input found or assumed
+  /// Relaxed cables against the solids and each other (MeasureFileClearances).
+  std::vector<ClearancePair> clearances;
+  /// The harness.json motion run on this input (RunFileMotion); unset without one.
+  std::optional<FileMotion> motion;
+  /// The harness.json tolerance envelope run on this input (RunFileTolerance); unset without one.
+  std::optional<FileTolerance> tolerance;
 };
+
+/// Fills f->clearances from the relaxed cables (failed ones are left out) and the drawing's
+/// solids, with the min_clearance `config` asks of them.
+void MeasureFileClearances(const HarnessConfig& config, RelaxedFile* f);
 
 /// The settings `f` is relaxed with: its own, else the run's `config`.
 const HarnessConfig& ConfigOf(const RelaxedFile& f, const HarnessConfig& config);

@@ -1,0 +1,79 @@
+// The motion of harness.json ("motion") run on the relaxed cables of one input: every cable
+// with a moving support is swept through the motion's poses (core/solver/motion_sweep.h), each
+// pose measured like a relaxed cable (min bend radius, max tension, support reactions, stability,
+// clearance to the solids and the other cables); over the motion, the worst pose of each and
+// where the followed branch is lost (snap-through).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cablefit/app/harness_config.h"
+#include "cablefit/core/network/clearance.h"
+#include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/core/solver/rod_solution.h"
+#include "cablefit/formats/json_util.h"
+
+namespace cablefit::addin {
+
+/// One pose of one cable.
+struct MotionPose {
+  double q = 0.0;  ///< [rad] or [m]
+  bool converged = false, stable = false;
+  bool escaped_unstable = false, jumped = false;  ///< the followed branch ended here (and how)
+  double step = 0.0;                       ///< [m] largest centreline move from the previous pose
+  double min_bend_radius = 0.0;            ///< [m] (infinity when straight)
+  double min_bend_radius_s = 0.0;          ///< [m]
+  bool bend_flag = false;                  ///< tighter than the cable's limit
+  double max_tension = 0.0;                ///< [N]
+  double max_tension_s = 0.0;              ///< [m]
+  std::vector<SupportReaction> reactions;  ///< per support of the set-up, in order
+  /// Least clearance to a solid it does not rest on or another cable (other cables at the same
+  /// pose); `clearance_to` names it, `clearance_required` [m] is what harness.json asks.
+  ClearanceHit clearance;
+  std::string clearance_to;
+  double clearance_required = 0.0;
+  int newton_iterations = 0;
+  Polyline centreline;  ///< sampled for output: s [m], points 3 x n [m]
+};
+
+/// The sweep of one cable.
+struct CableMotion {
+  int cable = 0;  ///< drawing cable index
+  std::string name;
+  std::vector<int> moving;  ///< indices of the set-up's supports that move
+  std::vector<MotionPose> poses;
+  int branch_lost_pose = -1;  ///< first pose where the followed branch ended, -1 = never
+  bool completed = false;
+  std::string message;  ///< why the sweep stopped early
+  /// [m] largest distance between the first and the last pose's centreline (there and back:
+  /// 0 up to solver accuracy unless the branch was lost); NaN when not there and back.
+  double back_to_start = 0.0;
+  double seconds = 0.0;
+};
+
+/// The motion of one input.
+struct FileMotion {
+  MotionConfig config;
+  std::vector<double> q;              ///< the pose parameters
+  std::vector<CableMotion> cables;    ///< swept cables, in drawing order
+  std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
+  double seconds = 0.0;
+};
+
+struct RelaxedFile;
+
+/// Sweeps the cables `config.motion` moves. Cables solved as a network (junctions, contact)
+/// are not swept yet (a problem line says so). Does nothing without a motion.
+void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f);
+
+/// The per-cable "motion" object of the relax JSON.
+json::Json CableMotionToJson(const CableMotion& m, const MotionConfig& config);
+/// The file-level "motion" object of the relax JSON (parameters, problems, meaning).
+json::Json FileMotionToJson(const FileMotion& m);
+/// Lines for stdout and the report: per swept cable its worst poses and stability.
+std::vector<std::string> MotionLines(const FileMotion& m);
+/// The report's "Motion" card (empty string when no input has a motion).
+std::string MotionReportSection(const std::vector<RelaxedFile>& files);
+
+}  // namespace cablefit::addin

@@ -1,0 +1,420 @@
+#include "cablefit/app/relax_motion.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "cablefit/app/relax_clearance.h"
+#include "cablefit/app/relax_file.h"
+#include "cablefit/app/relax_network.h"
+#include "cablefit/app/report_html.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/solver/motion_sweep.h"
+
+namespace cablefit::addin {
+namespace {
+
+using json::Json;
+using Clock = std::chrono::steady_clock;
+
+// Points of each pose's shape in the JSON: enough to draw it, few enough for 100s of poses.
+constexpr int kPoseShapeSamples = 51;
+
+// Parameter as the user wrote it: degrees for a rotation, metres for a translation.
+double Shown(const MotionConfig& m, double q) {
+  return m.kind == MotionConfig::Kind::kRotation ? q * 180 / M_PI : q;
+}
+const char* ShownUnit(const MotionConfig& m) {
+  return m.kind == MotionConfig::Kind::kRotation ? "deg" : "m";
+}
+
+// The set-up's support index a moving support names; -1 with `why` when there is none.
+int SupportIndex(const CableSetup& setup, const MotionConfig::MovingSupport& ms, std::string* why) {
+  const int n = static_cast<int>(setup.spec.supports.size());
+  if (ms.index >= 0) {
+    if (ms.index < n) return ms.index;
+    *why = "support " + std::to_string(ms.index) + " does not exist (cable '" + setup.name +
+           "' has " + std::to_string(n) + ")";
+    return -1;
+  }
+  for (int k = 0; k < n; ++k)
+    if (setup.support_origin[static_cast<size_t>(k)] == ms.at) return k;
+  *why = "cable '" + setup.name + "' has no support at its " + ms.at + " (it is free or joined)";
+  return -1;
+}
+
+// Pose measures from a solved pose.
+MotionPose Measure(const CableRelaxation& relaxed, const SweepPose& p, double factor) {
+  CableRelaxation r;
+  r.setup = relaxed.setup;
+  r.result = p.result;
+  MeasureBendAndTension(factor, &r);
+  MotionPose m;
+  m.q = p.q;
+  m.converged = p.converged;
+  m.stable = p.stable;
+  m.escaped_unstable = p.escaped_unstable;
+  m.jumped = p.jumped;
+  m.step = p.step;
+  m.min_bend_radius = r.min_bend_radius;
+  m.min_bend_radius_s = r.min_bend_radius_s;
+  m.bend_flag = r.bend_flag;
+  m.max_tension = r.max_tension;
+  m.max_tension_s = r.max_tension_s;
+  m.reactions = p.result.solution.reactions;
+  m.newton_iterations = p.result.newton_iterations;
+  const double length = relaxed.setup.spec.length;
+  m.centreline = SampleCenterline(p.result.solution.centerline,
+                                  UniformArcLengths(length, OutputSamples(length)));
+  return m;
+}
+
+Json HitJson(const MotionConfig& c, const MotionPose& p, int index, double value) {
+  return {{"pose", index}, {"q", Shown(c, p.q)}, {"value", json::NumberOrNull(value)}};
+}
+
+double LargestReaction(const MotionPose& p, int* support) {
+  double best = 0.0;
+  *support = -1;
+  for (size_t k = 0; k < p.reactions.size(); ++k)
+    if (p.reactions[k].force.norm() > best) {
+      best = p.reactions[k].force.norm();
+      *support = static_cast<int>(k);
+    }
+  return best;
+}
+
+}  // namespace
+
+void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f) {
+  if (!config.motion) return;
+  const auto t0 = Clock::now();
+  FileMotion fm;
+  fm.config = *config.motion;
+  fm.q = fm.config.Poses();
+  // Which supports of which cable move.
+  std::map<int, std::vector<int>> moving;  // drawing cable -> support indices
+  const std::vector<OrientedBox> solid_boxes = SolidBoxes(f->drawing);
+  std::vector<RelaxGroup> groups;
+  try {
+    groups = GroupCables(f->drawing, solid_boxes, config);
+  } catch (const std::exception& e) {
+    fm.problems.push_back(std::string("motion: ") + e.what());
+  }
+  for (size_t k = 0; k < fm.config.supports.size(); ++k) {
+    const MotionConfig::MovingSupport& ms = fm.config.supports[k];
+    const std::string where = "motion.moving[" + std::to_string(k) + "]: ";
+    int cable = -1;
+    for (size_t i = 0; i < f->drawing.cables.size(); ++i)
+      if (f->drawing.cables[i].name == ms.cable) cable = static_cast<int>(i);
+    if (cable < 0) {
+      fm.problems.push_back(where + "no cable '" + ms.cable + "' in this input");
+      continue;
+    }
+    if (!f->cables[static_cast<size_t>(cable)]) {
+      fm.problems.push_back(where + "cable '" + ms.cable + "' was not relaxed");
+      continue;
+    }
+    bool network = false;
+    for (const RelaxGroup& g : groups)
+      if (g.network() && std::count(g.cables.begin(), g.cables.end(), cable) > 0) network = true;
+    if (network) {
+      fm.problems.push_back(where + "cable '" + ms.cable +
+                            "' is solved as a network (junction or contact with a solid): its "
+                            "motion is not swept yet");
+      continue;
+    }
+    std::string why;
+    const int index = SupportIndex(f->cables[static_cast<size_t>(cable)]->setup, ms, &why);
+    if (index < 0) {
+      fm.problems.push_back(where + why);
+      continue;
+    }
+    std::vector<int>& list = moving[cable];
+    if (std::find(list.begin(), list.end(), index) == list.end()) list.push_back(index);
+  }
+  // Sweep each cable (its own rod: the cables of a motion do not touch each other's solve).
+  SweepOptions sweep_options;
+  sweep_options.simulation = options;
+  const MotionConfig& mc = fm.config;
+  for (const auto& [cable, supports] : moving) {
+    const CableRelaxation& relaxed = *f->cables[static_cast<size_t>(cable)];
+    CableMotion cm;
+    cm.cable = cable;
+    cm.name = relaxed.setup.name;
+    cm.moving = supports;
+    const auto c0 = Clock::now();
+    try {
+      const SweepSummary s = SweepRod(
+          relaxed.setup.spec, &relaxed.setup.route, supports, [&mc](double q) { return mc.At(q); },
+          fm.q, sweep_options);
+      cm.branch_lost_pose = s.branch_lost_pose;
+      cm.completed = s.completed;
+      cm.message = s.message;
+      for (const SweepPose& p : s.poses)
+        cm.poses.push_back(Measure(relaxed, p, ConfigOf(*f, config).min_bend_radius_factor));
+    } catch (const std::exception& e) {
+      cm.message = e.what();
+    }
+    cm.back_to_start = std::numeric_limits<double>::quiet_NaN();
+    if (mc.there_and_back && cm.completed && cm.poses.size() > 1)
+      cm.back_to_start = (cm.poses.front().centreline.points - cm.poses.back().centreline.points)
+                             .colwise()
+                             .norm()
+                             .maxCoeff();
+    cm.seconds = std::chrono::duration<double>(Clock::now() - c0).count();
+    fm.cables.push_back(std::move(cm));
+  }
+  // Clearance of every swept pose to the (fixed) solids and the other cables at that pose.
+  std::vector<SolidClearance> geometry;
+  geometry.reserve(f->drawing.solids.size());
+  for (const DrawnSolid& s : f->drawing.solids) geometry.emplace_back(s.mesh);
+  std::vector<ClearanceSolid> solids;
+  for (size_t k = 0; k < f->drawing.solids.size(); ++k)
+    solids.push_back({f->drawing.solids[k].name, &geometry[k],
+                      config.SolidMinClearance(f->drawing.solids[k].name)});
+  const std::vector<OrientedBox> boxes = ClearanceBoxes(f->drawing);
+  for (CableMotion& cm : fm.cables) {
+    const CableRelaxation& relaxed = *f->cables[static_cast<size_t>(cm.cable)];
+    for (size_t i = 0; i < cm.poses.size(); ++i) {
+      MotionPose& pose = cm.poses[i];
+      const ClearanceCable me =
+          ClearanceCableOf(relaxed, &pose.centreline, f->drawing, boxes, config);
+      std::vector<ClearancePair> pairs = MeasureClearances({me}, solids);
+      for (size_t j = 0; j < f->cables.size(); ++j) {
+        if (!f->cables[j] || static_cast<int>(j) == cm.cable) continue;
+        const Polyline* other = &f->cables[j]->relaxed;
+        for (const CableMotion& om : fm.cables)
+          if (om.cable == static_cast<int>(j) && i < om.poses.size())
+            other = &om.poses[i].centreline;
+        const ClearanceCable them =
+            ClearanceCableOf(*f->cables[j], other, f->drawing, boxes, config);
+        for (ClearancePair& p : MeasureClearances({me, them}, {})) pairs.push_back(p);
+      }
+      for (const ClearancePair& p : pairs) {
+        if (p.rests_on || !(p.hit.clearance < pose.clearance.clearance)) continue;
+        pose.clearance = p.hit;
+        pose.clearance_to = (p.other_is_solid ? "solid '" : "cable '") + p.other + "'";
+        pose.clearance_required = p.required;
+      }
+    }
+  }
+  fm.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  f->motion = std::move(fm);
+}
+
+Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
+  Json poses = Json::array();
+  int worst_bend = -1, worst_tension = -1, worst_reaction = -1, worst_clearance = -1;
+  double largest_reaction = -1;
+  int largest_reaction_support = -1;
+  for (size_t i = 0; i < m.poses.size(); ++i) {
+    const MotionPose& p = m.poses[i];
+    const int k = static_cast<int>(i);
+    Json reactions = Json::array();
+    for (const SupportReaction& r : p.reactions)
+      reactions.push_back(
+          {{"s", r.s}, {"force", json::ToJson(r.force)}, {"moment", json::ToJson(r.moment)}});
+    Json pj = {
+        {"q", Shown(c, p.q)},
+        {"converged", p.converged},
+        {"stable", p.stable},
+        {"branch_lost", p.escaped_unstable || p.jumped},
+        {"min_bend_radius",
+         {{"radius", json::NumberOrNull(p.min_bend_radius)},
+          {"s", p.min_bend_radius_s},
+          {"flag", p.bend_flag}}},
+        {"max_tension", {{"force", json::NumberOrNull(p.max_tension)}, {"s", p.max_tension_s}}},
+        {"reactions", reactions},
+        {"step", p.step},
+        {"iterations", p.newton_iterations}};
+    // The shape at a few points per pose (the relaxed cable's own centreline has ~1 per mm).
+    Json rows = Json::array();
+    const Polyline shape = SampleCenterline(
+        p.centreline,
+        UniformArcLengths(p.centreline.s[p.centreline.size() - 1], kPoseShapeSamples));
+    for (int k = 0; k < shape.size(); ++k)
+      rows.push_back({shape.s[k], shape.points(0, k), shape.points(1, k), shape.points(2, k)});
+    pj["centreline"] = {{"columns", {"s", "x", "y", "z"}}, {"rows", rows}};
+    if (p.escaped_unstable || p.jumped)
+      pj["how"] = p.escaped_unstable ? "unstable equilibrium" : "jump";
+    if (p.clearance.found()) {
+      pj["clearance"] = {
+          {"clearance", p.clearance.clearance},
+          {"to", p.clearance_to},
+          {"s", p.clearance.s},
+          {"point", json::ToJson(p.clearance.point)},
+          {"required", p.clearance_required},
+          {"violation", p.clearance_required > 0 && p.clearance.clearance < p.clearance_required}};
+    }
+    poses.push_back(pj);
+    if (worst_bend < 0 ||
+        p.min_bend_radius < m.poses[static_cast<size_t>(worst_bend)].min_bend_radius)
+      worst_bend = k;
+    if (std::isfinite(p.max_tension) &&
+        (worst_tension < 0 ||
+         p.max_tension > m.poses[static_cast<size_t>(worst_tension)].max_tension))
+      worst_tension = k;
+    int support = -1;
+    const double reaction = LargestReaction(p, &support);
+    if (reaction > largest_reaction) {
+      largest_reaction = reaction;
+      largest_reaction_support = support;
+      worst_reaction = k;
+    }
+    if (p.clearance.found() &&
+        (worst_clearance < 0 ||
+         p.clearance.clearance < m.poses[static_cast<size_t>(worst_clearance)].clearance.clearance))
+      worst_clearance = k;
+  }
+  Json worst = Json::object();
+  if (worst_bend >= 0) {
+    const MotionPose& p = m.poses[static_cast<size_t>(worst_bend)];
+    worst["min_bend_radius"] = HitJson(c, p, worst_bend, p.min_bend_radius);
+  }
+  if (worst_tension >= 0) {
+    const MotionPose& p = m.poses[static_cast<size_t>(worst_tension)];
+    worst["max_tension"] = HitJson(c, p, worst_tension, p.max_tension);
+  }
+  if (worst_reaction >= 0) {
+    worst["max_support_force"] =
+        HitJson(c, m.poses[static_cast<size_t>(worst_reaction)], worst_reaction, largest_reaction);
+    worst["max_support_force"]["support"] = largest_reaction_support;
+  }
+  if (worst_clearance >= 0) {
+    const MotionPose& p = m.poses[static_cast<size_t>(worst_clearance)];
+    worst["min_clearance"] = HitJson(c, p, worst_clearance, p.clearance.clearance);
+    worst["min_clearance"]["to"] = p.clearance_to;
+  }
+  Json lost = nullptr;
+  if (m.branch_lost_pose >= 0) {
+    const MotionPose& p = m.poses[static_cast<size_t>(m.branch_lost_pose)];
+    lost = {{"pose", m.branch_lost_pose},
+            {"q", Shown(c, p.q)},
+            {"how", p.escaped_unstable ? "unstable equilibrium" : "jump"}};
+  }
+  Json moving = Json::array();
+  for (int k : m.moving) moving.push_back(k);
+  return {{"name", c.name},           {"moving_supports", moving},
+          {"completed", m.completed}, {"message", m.message},
+          {"poses", poses},           {"worst", worst},
+          {"stability_lost", lost},   {"back_to_start", json::NumberOrNull(m.back_to_start)},
+          {"seconds", m.seconds}};
+}
+
+Json FileMotionToJson(const FileMotion& m) {
+  Json q = Json::array();
+  for (double x : m.q) q.push_back(Shown(m.config, x));
+  Json swept = Json::array();
+  for (const CableMotion& c : m.cables) swept.push_back(c.name);
+  Json j = {{"name", m.config.name},
+            {"kind", m.config.KindName()},
+            {"parameter_unit", ShownUnit(m.config)},
+            {"axis", json::ToJson(m.config.axis)},
+            {"parameters", q},
+            {"there_and_back", m.config.there_and_back},
+            {"cables", swept},
+            {"problems", m.problems},
+            {"seconds", m.seconds},
+            {"meaning",
+             "the supports listed in harness.json follow the motion (the drawing is parameter 0; "
+             "solids do not move); each pose is solved from the previous one. Per cable "
+             "'motion': per pose min bend radius, max tension, support reactions (force on the "
+             "cable, N and N m), stability of the equilibrium reached, least clearance; 'worst' "
+             "the pose of each extreme; 'stability_lost' the first pose where the branch "
+             "followed ends (an unstable equilibrium, or a jump: snap-through), after which the "
+             "sweep follows the stable branch it lands on; 'back_to_start' [m] the largest "
+             "distance between the first and last pose's centrelines"}};
+  if (m.config.kind == MotionConfig::Kind::kRotation) j["point"] = json::ToJson(m.config.point);
+  return j;
+}
+
+std::vector<std::string> MotionLines(const FileMotion& m) {
+  std::vector<std::string> lines;
+  const MotionConfig& c = m.config;
+  for (const CableMotion& cm : m.cables) {
+    char buf[1024];
+    int n = std::snprintf(buf, sizeof buf,
+                          "motion '%s' (%s %g..%g %s, %zu poses): %s: ", c.name.c_str(),
+                          c.KindName(), Shown(c, c.from), Shown(c, c.to), ShownUnit(c),
+                          cm.poses.size(), cm.name.c_str());
+    std::string text(buf, static_cast<size_t>(std::max(0, n)));
+    if (cm.poses.empty()) {
+      lines.push_back(text + "FAILED: " + cm.message);
+      continue;
+    }
+    const MotionPose* bend = &cm.poses[0];
+    const MotionPose* tension = &cm.poses[0];
+    const MotionPose* reaction = &cm.poses[0];
+    const MotionPose* clearance = nullptr;
+    double largest = -1;
+    for (const MotionPose& p : cm.poses) {
+      if (p.min_bend_radius < bend->min_bend_radius) bend = &p;
+      if (p.max_tension > tension->max_tension) tension = &p;
+      int support = 0;
+      const double f = LargestReaction(p, &support);
+      if (f > largest) {
+        largest = f;
+        reaction = &p;
+      }
+      if (p.clearance.found() &&
+          (!clearance || p.clearance.clearance < clearance->clearance.clearance))
+        clearance = &p;
+    }
+    std::snprintf(buf, sizeof buf,
+                  "min bend radius %.1f mm%s at %g %s, max tension %.3g N at %g %s, largest "
+                  "support force %.3g N at %g %s",
+                  1e3 * bend->min_bend_radius, bend->bend_flag ? " (TOO TIGHT)" : "",
+                  Shown(c, bend->q), ShownUnit(c), tension->max_tension, Shown(c, tension->q),
+                  ShownUnit(c), largest, Shown(c, reaction->q), ShownUnit(c));
+    text += buf;
+    if (clearance) {
+      const bool violation = clearance->clearance_required > 0 &&
+                             clearance->clearance.clearance < clearance->clearance_required;
+      std::snprintf(buf, sizeof buf, ", least clearance %.1f mm%s at %g %s (to %s, s=%.3f m)",
+                    1e3 * clearance->clearance.clearance, violation ? " (CLEARANCE)" : "",
+                    Shown(c, clearance->q), ShownUnit(c), clearance->clearance_to.c_str(),
+                    clearance->clearance.s);
+      text += buf;
+    }
+    if (cm.branch_lost_pose >= 0) {
+      const MotionPose& p = cm.poses[static_cast<size_t>(cm.branch_lost_pose)];
+      std::snprintf(buf, sizeof buf, ", STABILITY LOST at pose %d (%g %s: %s)", cm.branch_lost_pose,
+                    Shown(c, p.q), ShownUnit(c),
+                    p.escaped_unstable ? "unstable equilibrium" : "jump");
+      text += buf;
+    } else {
+      text += ", stable throughout";
+    }
+    if (std::isfinite(cm.back_to_start)) {
+      std::snprintf(buf, sizeof buf, ", back to start within %.2g m", cm.back_to_start);
+      text += buf;
+    }
+    if (!cm.completed) text += "; STOPPED: " + cm.message;
+    std::snprintf(buf, sizeof buf, ", %.3f s", cm.seconds);
+    lines.push_back(text + buf);
+  }
+  for (const std::string& p : m.problems) lines.push_back("motion '" + c.name + "': " + p);
+  return lines;
+}
+
+std::string MotionReportSection(const std::vector<RelaxedFile>& files) {
+  std::ostringstream h;
+  bool any = false;
+  for (const RelaxedFile& f : files) {
+    if (!f.motion) continue;
+    if (!any) h << "<section class=\"card\"><h2>Motion</h2><ul class=\"notes\">";
+    any = true;
+    for (const std::string& line : MotionLines(*f.motion))
+      h << "<li>" << HtmlEscape(f.stem) << ": " << HtmlEscape(line) << "</li>";
+  }
+  if (!any) return "";
+  h << "</ul><p>Per pose figures in the JSON's per-cable <code>motion</code>.</p></section>\n";
+  return h.str();
+}
+
+}  // namespace cablefit::addin

@@ -1,0 +1,145 @@
+#include "cablefit/core/network/clearance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "obstacle_distance.h"
+
+namespace cablefit {
+
+struct SolidClearance::Impl {
+  explicit Impl(const TriangleMesh& mesh) : field({ObstacleSpec{"", mesh}}) {}
+  ObstacleField field;
+};
+
+SolidClearance::SolidClearance(const TriangleMesh& mesh) : impl_(new Impl(mesh)) {}
+SolidClearance::~SolidClearance() { delete impl_; }
+SolidClearance::SolidClearance(SolidClearance&& o) noexcept : impl_(o.impl_) { o.impl_ = nullptr; }
+SolidClearance& SolidClearance::operator=(SolidClearance&& o) noexcept {
+  std::swap(impl_, o.impl_);
+  return *this;
+}
+
+bool SolidClearance::empty() const { return impl_ == nullptr || impl_->field.empty(); }
+
+ClearanceHit SolidClearance::ToTube(const Polyline& c, double radius, double s_from,
+                                    double s_to) const {
+  ClearanceHit best;
+  if (empty()) return best;
+  const double kEverywhere = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < c.size(); ++i) {
+    if (c.s[i] < s_from || c.s[i] > s_to) continue;
+    const Vec3 p = c.points.col(i);
+    const ObstacleHit hit = impl_->field.Nearest(p, kEverywhere);
+    if (hit.obstacle < 0) continue;
+    const double clearance = hit.distance - radius;
+    if (clearance < best.clearance) {
+      best.clearance = clearance;
+      best.s = c.s[i];
+      best.point = p;
+      best.other = hit.point;
+    }
+  }
+  return best;
+}
+
+void ClosestSegmentParameters(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1,
+                              double* s_out, double* t_out) {
+  // Ericson (2005) sec. 5.1.9, ClosestPtSegmentSegment.
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  constexpr double kTiny = 1e-300;
+  double s = 0, t = 0;
+  if (a <= kTiny && e <= kTiny) {
+    s = t = 0;
+  } else if (a <= kTiny) {
+    s = 0;
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= kTiny) {
+      t = 0;
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), denom = a * e - b * b;
+      s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) {
+        t = 0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  *s_out = s;
+  *t_out = t;
+}
+
+namespace {
+
+// Runs of consecutive segments with their bounding box: a pair of runs farther apart than the
+// best distance found so far cannot hold a closer pair of segments.
+constexpr int kRun = 16;
+
+struct Run {
+  int begin, end;  // segments [begin, end): segment i joins samples i and i + 1
+  Eigen::AlignedBox3d box;
+};
+
+std::vector<Run> Runs(const Polyline& c, double s_from, double s_to) {
+  std::vector<Run> runs;
+  for (int i = 0; i + 1 < c.size(); i += kRun) {
+    Run r{i, std::min(i + kRun, c.size() - 1), {}};
+    for (int k = r.begin; k <= r.end; ++k) r.box.extend(Vec3(c.points.col(k)));
+    // Whole runs outside the kept arc-length range are dropped here, partial ones per segment.
+    if (c.s[r.end] < s_from || c.s[r.begin] > s_to) continue;
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+}  // namespace
+
+ClearanceHit TubeToTubeClearance(const Polyline& a, double ra, const TubeSkip& skip_a,
+                                 const Polyline& b, double rb, const TubeSkip& skip_b) {
+  ClearanceHit best;
+  if (a.size() < 2 || b.size() < 2) return best;
+  const double a_from = a.s[0] + skip_a.start, a_to = a.s[a.size() - 1] - skip_a.end;
+  const double b_from = b.s[0] + skip_b.start, b_to = b.s[b.size() - 1] - skip_b.end;
+  const std::vector<Run> ra_runs = Runs(a, a_from, a_to), rb_runs = Runs(b, b_from, b_to);
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (const Run& x : ra_runs) {
+    for (const Run& y : rb_runs) {
+      const double gap = x.box.exteriorDistance(y.box);
+      if (gap * gap > best_d2) continue;
+      for (int i = x.begin; i < x.end; ++i) {
+        for (int j = y.begin; j < y.end; ++j) {
+          double u = 0, v = 0;
+          ClosestSegmentParameters(a.points.col(i), a.points.col(i + 1), b.points.col(j),
+                                   b.points.col(j + 1), &u, &v);
+          const double sa = a.s[i] + u * (a.s[i + 1] - a.s[i]);
+          const double sb = b.s[j] + v * (b.s[j + 1] - b.s[j]);
+          // The closest point must lie in the kept part of both cables.
+          if (sa < a_from || sa > a_to || sb < b_from || sb > b_to) continue;
+          const Vec3 pa = a.points.col(i) + u * (a.points.col(i + 1) - a.points.col(i));
+          const Vec3 pb = b.points.col(j) + v * (b.points.col(j + 1) - b.points.col(j));
+          const double d2 = (pa - pb).squaredNorm();
+          if (d2 < best_d2) {
+            best_d2 = d2;
+            best.s = sa;
+            best.point = pa;
+            best.other_s = sb;
+            best.other = pb;
+          }
+        }
+      }
+    }
+  }
+  if (best_d2 < std::numeric_limits<double>::infinity())
+    best.clearance = std::sqrt(best_d2) - ra - rb;
+  return best;
+}
+
+}  // namespace cablefit

@@ -1,0 +1,121 @@
+// harness.json "motion": what it reads (a hinge in degrees, a rail in metres, there and back)
+// and what it refuses with the field named (zero axis, NaN or equal angles, steps that are not a
+// positive whole number, no moving support, a support that is neither an end nor an index).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "cablefit/app/harness_config.h"
+#include "cablefit/core/base/errors.h"
+#include "test_support.h"
+
+namespace cablefit::addin {
+namespace {
+
+HarnessConfig Read(const std::string& motion) {
+  static const auto dir = testing::FreshTempDir("relax_motion_config");
+  const std::string path = (dir / "harness.json").string();
+  std::ofstream(path) << "{\"motion\": " << motion << "}";
+  return ReadHarnessConfig(path);
+}
+
+std::string Error(const std::string& motion) {
+  try {
+    Read(motion);
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RelaxMotionConfig, AHingeRotatesAboutItsAxisThroughItsPointThereAndBack) {
+  const HarnessConfig h = Read(R"({"name": "door", "rotation": {"axis": [0, 0, 2],
+      "point": [1, 0, 0], "angles": [0, 90]}, "steps": 3,
+      "moving": [{"cable": "W1", "support": "end"}, {"cable": "W2", "support": 1}]})");
+  ASSERT_TRUE(h.motion);
+  const MotionConfig& m = *h.motion;
+  EXPECT_EQ(m.name, "door");
+  EXPECT_EQ(m.kind, MotionConfig::Kind::kRotation);
+  EXPECT_NEAR(m.to, M_PI / 2, 1e-15);
+  const std::vector<double> q = m.Poses();
+  ASSERT_EQ(q.size(), 7u);  // 0, 30, 60, 90, 60, 30, 0 degrees
+  EXPECT_EQ(q[2], q[4]);    // the way back passes the same poses exactly
+  EXPECT_EQ(q.back(), q.front());
+  // (2, 0, 5) turned by 90 degrees about z through (1, 0, 0) is (1, 1, 5).
+  EXPECT_LT((m.At(M_PI / 2) * Vec3(2, 0, 5) - Vec3(1, 1, 5)).norm(), 1e-15);
+  ASSERT_EQ(m.supports.size(), 2u);
+  EXPECT_EQ(m.supports[0].at, "end");
+  EXPECT_EQ(m.supports[1].index, 1);
+}
+
+TEST(RelaxMotionConfig, ARailTranslatesOneWayWhenReturnIsOff) {
+  const HarnessConfig h = Read(R"({"translation": {"direction": [0, 3, 4], "distances": [0, 0.25]},
+      "steps": 5, "return": false, "moving": [{"cable": "seat", "support": "start"}]})");
+  const MotionConfig& m = *h.motion;
+  EXPECT_EQ(m.Poses().size(), 6u);
+  EXPECT_LT((m.At(0.25) * Vec3(1, 1, 1) - Vec3(1, 1.15, 1.2)).norm(), 1e-15);
+}
+
+TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
+  const std::string moving = R"("moving": [{"cable": "c", "support": "end"}])";
+  const std::string hinge =
+      R"("rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, 45]})";
+  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 0], "point": [0, 0, 0], "angles": [0, 45]}, )" +
+                  moving + "}")
+                .find("motion.rotation.axis"),
+            std::string::npos);
+  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [10, 10]}, )" +
+                  moving + "}")
+                .find("angles"),
+            std::string::npos);
+  EXPECT_NE(
+      Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, "NaN"]}, )" +
+            moving + "}")
+          .find("angles"),
+      std::string::npos);
+  EXPECT_NE(Error(R"({"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angles": [0, 720]}, )" +
+                  moving + "}")
+                .find("angles"),
+            std::string::npos);
+  for (const char* steps : {"-3", "0", "2.5", "\"10\""})
+    EXPECT_NE(
+        Error("{" + hinge + ", \"steps\": " + steps + ", " + moving + "}").find("motion.steps"),
+        std::string::npos)
+        << steps;
+  EXPECT_NE(Error("{" + hinge + ", \"moving\": []}").find("motion.moving"), std::string::npos);
+  EXPECT_NE(
+      Error("{" + hinge + R"(, "moving": [{"cable": "c", "support": "middle"}]})").find("support"),
+      std::string::npos);
+  EXPECT_NE(Error("{" + hinge + R"(, "moving": [{"cable": "c", "support": -1}]})").find("support"),
+            std::string::npos);
+  EXPECT_NE(Error("{" + moving + "}").find("exactly one"), std::string::npos);
+  EXPECT_NE(
+      Error("{" + hinge + R"(, "translation": {"direction": [1, 0, 0], "distances": [0, 1]}, )" +
+            moving + "}")
+          .find("exactly one"),
+      std::string::npos);
+  EXPECT_NE(Error("{" + hinge + ", \"speed\": 3, " + moving + "}").find("speed"),
+            std::string::npos);
+}
+
+TEST(RelaxToleranceConfig, FractionsAreReadAndImpossibleOnesRefused) {
+  static const auto dir = testing::FreshTempDir("relax_tolerance_config");
+  const std::string path = (dir / "harness.json").string();
+  std::ofstream(path) << R"({"tolerances": {"length": 0.02, "bending_stiffness": 0.3}})";
+  const HarnessConfig h = ReadHarnessConfig(path);
+  ASSERT_TRUE(h.tolerances);
+  EXPECT_DOUBLE_EQ(h.tolerances->length, 0.02);
+  EXPECT_DOUBLE_EQ(h.tolerances->bending_stiffness, 0.3);
+  EXPECT_DOUBLE_EQ(h.tolerances->linear_density, 0.0);
+  for (const char* bad :
+       {R"({"tolerances": {"length": -0.02}})", R"({"tolerances": {"length": 0.5}})",
+        R"({"tolerances": {"bending_stiffness": 0.95}})", R"({"tolerances": {}})",
+        R"({"tolerances": {"length": "2%"}})", R"({"tolerances": {"clips": 0.01}})"}) {
+    std::ofstream(path) << bad;
+    EXPECT_THROW(ReadHarnessConfig(path), FileError) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace cablefit::addin
