@@ -2,7 +2,8 @@
 """Writes door_hinge.stl: a 10 mm cable drawn sagging from a body pillar (x = 0) to a door
 (x = 0.25 m) whose hinge is the vertical axis through (0.30, -0.03, 0), plus the pillar, the door
 panel and a loudspeaker below as boxes. With door_hinge.json, `cablefit relax door_hinge.stl --config door_hinge.json` swings
-the door open by 75 degrees and back. Units: metres (use --unit m)."""
+the door open by 75 degrees and back. The STL is in millimetres (relax's default unit); the
+script works in metres, like harness.json."""
 import math
 import struct
 
@@ -55,12 +56,12 @@ def box(lo, hi):
 
 def write(path, tris):
     with open(path, "wb") as f:
-        f.write(b"door hinge sample, metres".ljust(80, b" "))
+        f.write(b"door hinge sample, millimetres".ljust(80, b" "))
         f.write(struct.pack("<I", len(tris)))
         for a, b, c in tris:
             f.write(struct.pack("<3f", 0, 0, 0))
             for p in (a, b, c):
-                f.write(struct.pack("<3f", *p))
+                f.write(struct.pack("<3f", *(1000.0 * x for x in p)))
             f.write(b"\0\0")
 
 

@@ -78,11 +78,11 @@ json::Json ClearancePairToJson(const ClearancePair& p) {
 std::string ClearanceViolationText(const ClearancePair& p) {
   char buf[512];
   std::snprintf(buf, sizeof buf,
-                "%s to %s '%s': %.1f mm, less than the %.1f mm asked, at s=%.3f m (%.4f, %.4f, "
-                "%.4f) m",
+                "%s to %s '%s': %.1f mm, less than the %.1f mm asked, at s=%.0f mm (%.1f, %.1f, "
+                "%.1f) mm",
                 p.cable.c_str(), p.other_is_solid ? "solid" : "cable", p.other.c_str(),
-                1e3 * p.hit.clearance, 1e3 * p.required, p.hit.s, p.hit.point.x(), p.hit.point.y(),
-                p.hit.point.z());
+                1e3 * p.hit.clearance, 1e3 * p.required, 1e3 * p.hit.s, 1e3 * p.hit.point.x(),
+                1e3 * p.hit.point.y(), 1e3 * p.hit.point.z());
   return buf;
 }
 

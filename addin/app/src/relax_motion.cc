@@ -375,10 +375,10 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
     if (clearance) {
       const bool violation = clearance->clearance_required > 0 &&
                              clearance->clearance.clearance < clearance->clearance_required;
-      std::snprintf(buf, sizeof buf, ", least clearance %.1f mm%s at %g %s (to %s, s=%.3f m)",
+      std::snprintf(buf, sizeof buf, ", least clearance %.1f mm%s at %g %s (to %s, s=%.0f mm)",
                     1e3 * clearance->clearance.clearance, violation ? " (CLEARANCE)" : "",
                     Shown(c, clearance->q), ShownUnit(c), clearance->clearance_to.c_str(),
-                    clearance->clearance.s);
+                    1e3 * clearance->clearance.s);
       text += buf;
     }
     if (cm.branch_lost_pose >= 0) {

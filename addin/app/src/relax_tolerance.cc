@@ -179,9 +179,9 @@ std::vector<std::string> ToleranceLines(const FileTolerance& t) {
     } else {
       const ToleranceCase& w = c.corners[static_cast<size_t>(c.worst_corner)];
       std::snprintf(buf, sizeof buf,
-                    "tolerance: %s: max excursion %.2f mm at s=%.3f m (length %+.3g%%, EI %+.3g%%, "
+                    "tolerance: %s: max excursion %.2f mm at s=%.0f mm (length %+.3g%%, EI %+.3g%%, "
                     "density %+.3g%%), %zu corners, %zu interior checks %s, %.3f s",
-                    c.name.c_str(), 1e3 * w.excursion, w.s, 100 * w.length,
+                    c.name.c_str(), 1e3 * w.excursion, 1e3 * w.s, 100 * w.length,
                     100 * w.bending_stiffness, 100 * w.linear_density, c.corners.size(),
                     c.interior.size(), c.interior_within ? "within" : "BEYOND THE CORNERS",
                     c.seconds);

@@ -4,6 +4,7 @@
 // input, write each input's STEP/JSON/PNG; then report.html. CAD I/O is serialised (OCCT's
 // readers and writers keep global state).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -11,6 +12,8 @@
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <string>
+#include <tuple>
 
 #include "cablefit/app/batch_pool.h"
 #include "cablefit/cli/commands.h"
@@ -162,11 +165,23 @@ int RunRelax(const RelaxArgs& a) {
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
   std::mutex cad_mutex, failures_mutex;
   ProgressBar bar(3 * n + 1, a.quiet ? nullptr : stderr);
-  auto fail = [&](RelaxedFile& f, const std::string& problem) {
+  // Failures are printed as they happen but listed (and a file's first problem kept) in the
+  // order of the work, not of the threads: the same run gives the same list and JSON.
+  struct Failure {
+    int stage, file, order;
+    std::string text;
+  };
+  std::vector<Failure> failure_log;
+  auto record = [&](RelaxedFile& f, const std::string& problem, int stage, int order) {
     std::lock_guard lock(failures_mutex);
-    if (f.error.empty()) f.error = problem;
-    failures.push_back(f.input + ": " + problem);
+    failure_log.push_back({stage, static_cast<int>(&f - files.data()), order, problem});
+  };
+  auto say = [&](RelaxedFile& f, const std::string& problem) {
     bar.PrintLine(stderr, "cablefit: " + f.input + ": " + problem);
+  };
+  auto fail = [&](RelaxedFile& f, const std::string& problem, int stage, int order = 0) {
+    record(f, problem, stage, order);
+    say(f, problem);
   };
 
   // 1. Read.
@@ -200,7 +215,7 @@ int RunRelax(const RelaxArgs& a) {
       f.cables.resize(f.drawing.cables.size());
       f.cable_errors.resize(f.drawing.cables.size());
     } catch (...) {
-      fail(f, ErrorText(std::current_exception()));
+      fail(f, ErrorText(std::current_exception()), 1);
     }
     f.times.read = Since(t0);
     bar.Finish(i);
@@ -235,12 +250,12 @@ int RunRelax(const RelaxArgs& a) {
       for (RelaxGroup& g : GroupCables(f.drawing, boxes[static_cast<size_t>(i)], ConfigOf(f, config)))
         jobs.push_back({i, std::move(g)});
     } catch (...) {
-      fail(f, ErrorText(std::current_exception()));
+      fail(f, ErrorText(std::current_exception()), 2);
     }
   }
   const int nj = static_cast<int>(jobs.size());
   std::vector<double> job_seconds(static_cast<size_t>(nj), 0.0);
-  std::mutex network_mutex;
+  std::vector<json::Json> job_network(static_cast<size_t>(nj));
   RunBatch(nj, ResolveJobs(a.jobs, nj), [&](int k) {
     const Job& job = jobs[static_cast<size_t>(k)];
     RelaxedFile& f = files[static_cast<size_t>(job.file)];
@@ -253,10 +268,7 @@ int RunRelax(const RelaxArgs& a) {
                                       ConfigOf(f, config), sim_options);
     const std::string& problem = g.problem;
     std::vector<CableRelaxation>& done = g.cables;
-    if (!g.network.is_null()) {
-      std::lock_guard lock(network_mutex);
-      f.networks.push_back(std::move(g.network));
-    }
+    job_network[static_cast<size_t>(k)] = std::move(g.network);
     if (problem.empty()) {
       for (CableRelaxation& r : done) {
         if (!a.quiet) bar.PrintLine(stdout, CableLine(f, r));
@@ -264,10 +276,15 @@ int RunRelax(const RelaxArgs& a) {
       }
     } else {
       for (int c : job.group.cables) f.cable_errors[static_cast<size_t>(c)] = problem;
-      fail(f, (job.group.cables.size() > 1 ? "cables '" : "cable '") + label + "': " + problem);
+      fail(f, (job.group.cables.size() > 1 ? "cables '" : "cable '") + label + "': " + problem, 3,
+           k);
     }
     job_seconds[static_cast<size_t>(k)] = Since(t0);
   });
+  for (int k = 0; k < nj; ++k)
+    if (!job_network[static_cast<size_t>(k)].is_null())
+      files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].networks.push_back(
+          std::move(job_network[static_cast<size_t>(k)]));
   for (int k = 0; k < nj; ++k)
     files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].times.relax +=
         job_seconds[static_cast<size_t>(k)];
@@ -301,8 +318,9 @@ int RunRelax(const RelaxArgs& a) {
       t0 = Clock::now();
       {
         std::lock_guard lock(cad_mutex);
+        int order = 0;
         for (const std::string& problem : WriteRelaxedStepFile((out / (f.stem + ".step")).string(), f, ConfigOf(f, config)))
-          fail(f, problem);
+          fail(f, problem, 4, order++);
       }
       f.times.step = Since(t0);
       if (a.pictures) {
@@ -325,12 +343,20 @@ int RunRelax(const RelaxArgs& a) {
       if (!a.quiet) bar.PrintLine(stdout, buf);
     } catch (const FileError& e) {
       // Names the output that could not be written: the input is not to blame.
-      fail(f, std::string("its results could not be written: ") + e.what());
+      fail(f, std::string("its results could not be written: ") + e.what(), 5);
     } catch (...) {
-      fail(f, ErrorText(std::current_exception()));
+      fail(f, ErrorText(std::current_exception()), 5);
     }
     bar.Finish(2 * n + i);
   });
+  std::stable_sort(failure_log.begin(), failure_log.end(), [](const Failure& x, const Failure& y) {
+    return std::tie(x.file, x.stage, x.order) < std::tie(y.file, y.stage, y.order);
+  });
+  for (const Failure& e : failure_log) {
+    RelaxedFile& f = files[static_cast<size_t>(e.file)];
+    if (f.error.empty()) f.error = e.text;  // the file's first problem, in the order of the work
+    failures.push_back(f.input + ": " + e.text);
+  }
 
   bool any_read = false;
   for (const RelaxedFile& f : files) any_read = any_read || f.read_ok;

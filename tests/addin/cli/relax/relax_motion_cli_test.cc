@@ -34,7 +34,7 @@ fs::path Config(const fs::path& dir, const std::function<void(Json*)>& edit) {
 }
 
 Json Relax(const fs::path& config, const fs::path& out, std::string* stdout_text = nullptr) {
-  const auto run = RunCablefit("relax " + Q(Sample("door_hinge.stl")) + " --unit m --config " +
+  const auto run = RunCablefit("relax " + Q(Sample("door_hinge.stl")) + " --config " +
                                Q(config) + " --out " + Q(out) + " --no-pictures");
   EXPECT_EQ(run.exit_code, 0) << run.err << run.out;
   if (stdout_text) *stdout_text = run.out;
