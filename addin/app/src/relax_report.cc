@@ -40,6 +40,10 @@ SupportMarkerKind MarkerOf(SupportKind kind) {
   return SupportMarkerKind::kPin;
 }
 
+// The smallest top of the deviation colour scale [mm]: below a millimetre a drawing and a
+// relaxed cable agree for a harness engineer, so such cables stay dark.
+constexpr double kColourScaleFloorMm = 1.0;
+
 // Red is outside the deviation colour map (viridis), so a failed cable cannot be read as one
 // that deviates.
 constexpr Rgb kFailedColour{214, 39, 40};
@@ -76,6 +80,14 @@ Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only =
     if (const auto& r = f.cables[i]) {
       tube.centreline = r->relaxed;
       tube.deviation = r->deviation;
+      // The cable's name where it moved most, with how far: which tube is which, and the
+      // point the report's table gives.
+      if (r->deviation.size() == r->relaxed.size() && r->deviation.size() > 0) {
+        Eigen::Index at = 0;
+        r->deviation.maxCoeff(&at);
+        scene.labels.push_back({r->relaxed.points.col(at),
+                                drawn.name + ": " + FormatLength(r->deviation[at])});
+      }
       for (const SupportSpec& sp : r->setup.spec.supports) {
         scene.supports.push_back({MarkerOf(sp.kind), sp.position, " "});
       }
@@ -83,9 +95,20 @@ Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only =
       tube.centreline = drawn.centreline;
       tube.name = drawn.name + " (failed)";
       tube.flat_colour = kFailedColour;
+      if (drawn.centreline.size() > 0)
+        scene.labels.push_back({drawn.centreline.points.col(drawn.centreline.size() / 2),
+                                drawn.name + ": FAILED"});
     }
     scene.tubes.push_back(std::move(tube));
   }
+  // A floor under the colour scale: a cable that moved by micrometres is not a hot spot.
+  double largest = 0.0;
+  for (const SceneTube& t : scene.tubes)
+    if (t.deviation.size() > 0) largest = std::max(largest, t.deviation.maxCoeff());
+  ColourScale scale;
+  scale.min = 0.0;
+  scale.max = std::max(1e3 * largest, kColourScaleFloorMm);
+  scene.colour_scale = scale;
   return scene;
 }
 

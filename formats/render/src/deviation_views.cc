@@ -60,6 +60,7 @@ Image Compose(const std::vector<const Scene*>& scenes, const ViewLayout& layout,
     const Scene& scene = *scenes[static_cast<std::size_t>(panel.scene)];
     render::DrawPanelFrame(image, panel.camera);
     render::DrawSupports(image, panel.camera, scene);
+    render::DrawLabels(image, panel.camera, scene);
     render::DrawGravityArrow(image, panel.camera, scene.gravity);
     if (scene.show_scale_bar) render::DrawScaleBar(image, panel.camera);
   }

@@ -76,6 +76,29 @@ void DrawSupports(Image& image, const ViewCamera& camera, const Scene& scene) {
   }
 }
 
+// A cross, so it is not read as a clip's ring.
+void DrawLabelMark(Image& image, const Point2& c) {
+  StrokeSegment(image, {c.x() - 4.5, c.y() - 4.5}, {c.x() + 4.5, c.y() + 4.5}, 2.0, kInk);
+  StrokeSegment(image, {c.x() - 4.5, c.y() + 4.5}, {c.x() + 4.5, c.y() - 4.5}, 2.0, kInk);
+}
+
+void DrawLabels(Image& image, const ViewCamera& camera, const Scene& scene) {
+  Font& font = Font::Get(FontWeight::kRegular);
+  for (const SceneLabel& label : scene.labels) {
+    if (!label.position.allFinite() || label.text.empty()) continue;
+    const Point2 c = camera.Project(label.position);
+    DrawLabelMark(image, c);
+    // Below and to the right (support labels sit above), on a white halo, kept inside the panel.
+    const double w = font.Width(label.text, kLabelSize);
+    double lx = c.x() + 8, ly = c.y() + 18;
+    lx = std::min(lx, camera.x + camera.width - w - 6);
+    lx = std::max(lx, static_cast<double>(camera.x) + 4);
+    ly = std::min(ly, camera.y + camera.height - 6.0);
+    FillRect(image, lx - 2, ly - 12, lx + w + 2, ly + 4, Rgb{255, 255, 255}, 0.8);
+    font.Draw(image, lx, ly, label.text, kLabelSize, kInk);
+  }
+}
+
 void DrawGravityArrow(Image& image, const ViewCamera& camera, const Eigen::Vector3d& gravity) {
   if (!(gravity.norm() > 0.0) || !gravity.allFinite()) return;
   const Eigen::Vector3d v = camera.rotation * gravity.normalized();
@@ -143,12 +166,13 @@ void DrawColourBar(Image& image, int x, int y, int width, int height, const Colo
 
 int DrawLegend(Image& image, int x, int y, const std::vector<const Scene*>& scenes,
                bool with_scan_points) {
-  bool ghost = false, scan = false, highlight = false;
+  bool ghost = false, scan = false, highlight = false, labels = false;
   bool kinds[3] = {false, false, false};
   for (const Scene* scene : scenes) {
     ghost = ghost || !scene->ghosts.empty();
     scan = scan || (with_scan_points && scene->scan_points.cols() > 0);
     highlight = highlight || !scene->highlights.empty() || scene->highlighted_support >= 0;
+    labels = labels || !scene->labels.empty();
     for (const SceneSupport& s : scene->supports) kinds[static_cast<int>(s.kind)] = true;
   }
   Font& font = Font::Get(FontWeight::kRegular);
@@ -168,6 +192,10 @@ int DrawLegend(Image& image, int x, int y, const std::vector<const Scene*>& scen
     const auto kind = static_cast<SupportMarkerKind>(k);
     DrawSupportSymbol(image, {x + 9.0, y + 0.0}, kind, 5.5);
     entry(ToString(kind));
+  }
+  if (labels) {
+    DrawLabelMark(image, {x + 9.0, y + 0.0});
+    entry("largest deviation");
   }
   if (scan) {
     for (int i = 0; i < 3; ++i) FillCircle(image, {x + 3.0 + 6 * i, y + 0.0}, 1.3, Rgb{70, 70, 70});

@@ -17,6 +17,8 @@ inline const Rgb kHighlight{214, 39, 40};
 
 void DrawPanelFrame(Image& image, const ViewCamera& camera);
 void DrawSupports(Image& image, const ViewCamera& camera, const Scene& scene);
+/// Each of the scene's labels: a ring at its point and its text beside it.
+void DrawLabels(Image& image, const ViewCamera& camera, const Scene& scene);
 void DrawGravityArrow(Image& image, const ViewCamera& camera, const Eigen::Vector3d& gravity);
 void DrawScaleBar(Image& image, const ViewCamera& camera);
 /// Vertical colour bar with ticks, numbers and the scale's label as title.

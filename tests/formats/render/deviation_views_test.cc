@@ -155,6 +155,30 @@ TEST(DeviationViews, RejectsBadInput) {
   EXPECT_THROW_WITH(RenderDeviationViews(scene, RenderOptions{}), InvalidInput, "radius");
 }
 
+TEST(DeviationViews, ALabelMarksItsPointWithACrossAndItsTextBeside) {
+  const testing::SaggingCable cable;
+  Scene scene = cable.Build();
+  const RenderOptions options;
+  const ViewLayout layout = PlanDeviationViews(scene, options);
+  const Image plain = RenderDeviationViews(scene, options);
+  // 30 mm beside the cable, so the tube does not hide it in any view.
+  scene.labels.push_back({cable.Point(0.5) + Eigen::Vector3d(0, 0.03, 0.03), "cable_7: 12.5 mm"});
+  const Image labelled = RenderDeviationViews(scene, options);
+  WritePng((cablefit::testing::FreshTempDir("render") / "label.png").string(), labelled);
+  for (const auto& panel : layout.panels) {
+    const Eigen::Vector2d at = panel.camera.Project(scene.labels[0].position);
+    // The cross's arms, 4 px from the point along a diagonal, in ink.
+    EXPECT_LT(ClosestNear(labelled, at + Eigen::Vector2d(3, 3), 1, Rgb{30, 30, 30}), 80.0)
+        << panel.camera.title;
+    // The text to its lower right changes the pixels there.
+    int changed = 0;
+    for (int y = static_cast<int>(at.y()) + 6; y < at.y() + 22; ++y)
+      for (int x = static_cast<int>(at.x()) + 8; x < at.x() + 90; ++x)
+        if (labelled.Contains(x, y) && ColourDistance(labelled.At(x, y), plain.At(x, y)) > 60) ++changed;
+    EXPECT_GT(changed, 30) << panel.camera.title;
+  }
+}
+
 }  // namespace
 }  // namespace cablefit
 

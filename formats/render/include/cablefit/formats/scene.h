@@ -39,6 +39,13 @@ struct SceneSupport {
   std::string label;                                   // e.g. "1"; empty -> its index + 1
 };
 
+/// A text at a point of the model, with a small ring there: a cable's name at its largest
+/// deviation, so the reader knows which tube is which and where it moved most.
+struct SceneLabel {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // 3 [m]
+  std::string text;
+};
+
 /// A stretch of one tube to draw attention to (e.g. the region a diagnosis blames).
 struct ArcHighlight {
   int tube = 0;          // index into Scene::tubes
@@ -51,6 +58,7 @@ struct Scene {
   std::vector<SceneTube> tubes;
   std::vector<SceneGhost> ghosts;
   std::vector<SceneSupport> supports;
+  std::vector<SceneLabel> labels;
   Eigen::Matrix3Xd scan_points;  // 3 x m [m], already sub-sampled by the caller; may be empty
   std::vector<ArcHighlight> highlights;
   int highlighted_support = -1;  // index into `supports`, -1 for none
