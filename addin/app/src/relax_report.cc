@@ -101,6 +101,10 @@ Scene HarnessScene(const RelaxedFile& f, const HarnessConfig& config, int only =
     }
     scene.tubes.push_back(std::move(tube));
   }
+  // The parts around the cables (clips, brackets, ducts), for context; a close-up shows only
+  // the ones near its cable (the views frame the cables, not the parts).
+  if (only < 0)
+    for (const DrawnSolid& solid : f.drawing.solids) scene.solids.push_back({solid.name, solid.mesh});
   // A floor under the colour scale: a cable that moved by micrometres is not a hot spot.
   double largest = 0.0;
   for (const SceneTube& t : scene.tubes)

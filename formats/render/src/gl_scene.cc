@@ -5,6 +5,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -84,7 +85,21 @@ GLuint BuildProgram() {
 struct SceneMeshes {
   TubeMesh tubes;
   TubeMesh halos;
+  TubeMesh solids;  // one flat-shaded triangle per face (positions only are used)
 };
+
+void AppendSolid(const TriangleMesh& mesh, TubeMesh* out) {
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
+    const Eigen::Vector3d a = mesh.vertices.col(mesh.faces(0, f));
+    const Eigen::Vector3d b = mesh.vertices.col(mesh.faces(1, f));
+    const Eigen::Vector3d c = mesh.vertices.col(mesh.faces(2, f));
+    if (!a.allFinite() || !b.allFinite() || !c.allFinite()) continue;
+    const std::uint32_t base = static_cast<std::uint32_t>(out->positions.size() / 3);
+    for (const Eigen::Vector3d& p : {a, b, c})
+      for (int k = 0; k < 3; ++k) out->positions.push_back(static_cast<float>(p[k]));
+    for (std::uint32_t k = 0; k < 3; ++k) out->indices.push_back(base + k);
+  }
+}
 
 SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides) {
   SceneMeshes meshes;
@@ -105,6 +120,7 @@ SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides)
     const std::vector<Rgb> red(static_cast<std::size_t>(part.cols()), Rgb{214, 39, 40});
     meshes.halos.Append(BuildTubeMesh(part, tube.radius * 1.9, sides, red));
   }
+  for (const SceneSolid& solid : scene.solids) AppendSolid(solid.mesh, &meshes.solids);
   return meshes;
 }
 
@@ -182,6 +198,9 @@ std::vector<Eigen::Vector3d> DepthBounds(const Scene& scene) {
   for (const SceneTube& tube : scene.tubes) add(tube.centreline.points, tube.radius * 2.5);
   for (const SceneGhost& ghost : scene.ghosts) add(ghost.points, 0.0);
   add(scene.scan_points, 0.0);
+  // The parts' depth too (not their extent across the view, which the cameras frame without
+  // them): otherwise a part's faces in front of and behind a cable fall outside the depth range.
+  for (const SceneSolid& solid : scene.solids) add(solid.mesh.vertices, 0.0);
   return bounds;
 }
 
@@ -234,6 +253,19 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
     for (const SceneGhost& ghost : scene.ghosts) {
       glColor3ub(ghost.colour.r, ghost.colour.g, ghost.colour.b);
       DrawPoints(ghost.points, GL_LINE_STRIP);
+    }
+    // Parts last, translucent and without depth writes: a cable inside a clip shows through.
+    if (!m.solids.indices.empty()) {
+      glEnable(GL_BLEND);
+      glDepthMask(GL_FALSE);
+      glEnableClientState(GL_VERTEX_ARRAY);
+      glColor4f(0.45f, 0.47f, 0.52f, 0.22f);
+      glVertexPointer(3, GL_FLOAT, 0, m.solids.positions.data());
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.solids.indices.size()), GL_UNSIGNED_INT,
+                     m.solids.indices.data());
+      glDisableClientState(GL_VERTEX_ARRAY);
+      glDepthMask(GL_TRUE);
+      glDisable(GL_BLEND);
     }
     if (options.show_scan_points && scene.scan_points.cols() > 0) {
       glPointSize(static_cast<float>(1.5 * s));

@@ -68,6 +68,7 @@ void DrawSupports(Image& image, const ViewCamera& camera, const Scene& scene) {
     }
     DrawSupportSymbol(image, c, support.kind, 5.5);
     const std::string label = support.label.empty() ? std::to_string(i + 1) : support.label;
+    if (label.find_first_not_of(' ') == std::string::npos) continue;  // asked to be unlabelled
     // Label up and to the right, on a white halo so it stays legible over the tube.
     const double lx = c.x() + 10, ly = c.y() - 9;
     const double w = font.Width(label, kLabelSize);
@@ -166,13 +167,14 @@ void DrawColourBar(Image& image, int x, int y, int width, int height, const Colo
 
 int DrawLegend(Image& image, int x, int y, const std::vector<const Scene*>& scenes,
                bool with_scan_points) {
-  bool ghost = false, scan = false, highlight = false, labels = false;
+  bool ghost = false, scan = false, highlight = false, labels = false, solids = false;
   bool kinds[3] = {false, false, false};
   for (const Scene* scene : scenes) {
     ghost = ghost || !scene->ghosts.empty();
     scan = scan || (with_scan_points && scene->scan_points.cols() > 0);
     highlight = highlight || !scene->highlights.empty() || scene->highlighted_support >= 0;
     labels = labels || !scene->labels.empty();
+    solids = solids || !scene->solids.empty();
     for (const SceneSupport& s : scene->supports) kinds[static_cast<int>(s.kind)] = true;
   }
   Font& font = Font::Get(FontWeight::kRegular);
@@ -192,6 +194,10 @@ int DrawLegend(Image& image, int x, int y, const std::vector<const Scene*>& scen
     const auto kind = static_cast<SupportMarkerKind>(k);
     DrawSupportSymbol(image, {x + 9.0, y + 0.0}, kind, 5.5);
     entry(ToString(kind));
+  }
+  if (solids) {
+    FillRect(image, x + 1, y - 6, x + 17, y + 6, Rgb{115, 120, 133}, 0.35);
+    entry("part");
   }
   if (labels) {
     DrawLabelMark(image, {x + 9.0, y + 0.0});

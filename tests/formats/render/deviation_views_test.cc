@@ -179,6 +179,43 @@ TEST(DeviationViews, ALabelMarksItsPointWithACrossAndItsTextBeside) {
   }
 }
 
+TEST(DeviationViews, APartIsDrawnTranslucentWithoutHidingTheCable) {
+  const testing::SaggingCable cable;
+  Scene scene = cable.Build();
+  const RenderOptions options;
+  const ViewLayout layout = PlanDeviationViews(scene, options);
+  const Image plain = RenderDeviationViews(scene, options);
+  // A block around the middle of the cable, 60 mm on a side.
+  const Eigen::Vector3d c = cable.Point(0.5);
+  TriangleMesh box;
+  box.vertices.resize(3, 8);
+  for (int i = 0; i < 8; ++i)
+    box.vertices.col(i) = c + 0.03 * Eigen::Vector3d(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+  box.faces.resize(3, 12);
+  box.faces << 0, 1, 4, 5, 0, 1, 2, 3, 0, 2, 1, 3,  //
+      2, 3, 5, 7, 1, 5, 6, 7, 4, 6, 5, 7,           //
+      3, 2, 6, 6, 4, 4, 7, 6, 2, 4, 7, 7;
+  scene.solids.push_back({"block", box});
+  const Image with = RenderDeviationViews(scene, options);
+  ASSERT_EQ(PlanDeviationViews(scene, options).panels.size(), layout.panels.size());
+  for (const auto& panel : layout.panels) {
+    const Eigen::Vector2d on = panel.camera.Project(c);
+    // The cable itself keeps its colour (the part is drawn behind it, translucent).
+    EXPECT_LT(ColourDistance(with.At(static_cast<int>(on.x()), static_cast<int>(on.y())),
+                             plain.At(static_cast<int>(on.x()), static_cast<int>(on.y()))),
+              kColourTolerance)
+        << panel.camera.title;
+  }
+  // Somewhere in the panels the block made white pixels grey.
+  int greyed = 0;
+  for (int yy = 0; yy < with.height; ++yy)
+    for (int xx = 0; xx < with.width; ++xx)
+      if (InAnyPanel(layout, xx, yy) && ColourDistance(plain.At(xx, yy), Rgb{255, 255, 255}) < 5 &&
+          ColourDistance(with.At(xx, yy), Rgb{255, 255, 255}) > 25)
+        ++greyed;
+  EXPECT_GT(greyed, 1000);
+}
+
 }  // namespace
 }  // namespace cablefit
 

@@ -36,7 +36,14 @@ std::string ToString(SupportMarkerKind kind);
 struct SceneSupport {
   SupportMarkerKind kind = SupportMarkerKind::kClamp;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // 3 [m]
-  std::string label;                                   // e.g. "1"; empty -> its index + 1
+  std::string label;  // e.g. "1"; empty -> its index + 1; blank (" ") -> no label
+};
+
+/// A part beside the cables (clip, bracket, duct), drawn as a translucent grey body so that
+/// the cables inside it stay visible. It does not widen the views: they frame the cables.
+struct SceneSolid {
+  std::string name;
+  TriangleMesh mesh;  // [m]
 };
 
 /// A text at a point of the model, with a small ring there: a cable's name at its largest
@@ -59,6 +66,7 @@ struct Scene {
   std::vector<SceneGhost> ghosts;
   std::vector<SceneSupport> supports;
   std::vector<SceneLabel> labels;
+  std::vector<SceneSolid> solids;
   Eigen::Matrix3Xd scan_points;  // 3 x m [m], already sub-sampled by the caller; may be empty
   std::vector<ArcHighlight> highlights;
   int highlighted_support = -1;  // index into `supports`, -1 for none
