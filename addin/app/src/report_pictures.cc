@@ -144,10 +144,14 @@ Scene ModelScene(const DiagnosedCase& d, const Polyline& nodes, Eigen::VectorXd 
     SceneSupport s;
     s.kind = MarkerKind(spec.supports[i].kind);
     s.position = spec.supports[i].position;
-    s.label = std::to_string(i);  // the clamp index diagnosis.json uses
+    // The clamp index diagnosis.json uses, and which end it holds.
+    s.label = std::to_string(i);
+    if (i == 0) s.label += " start";
+    else if (i + 1 == spec.supports.size()) s.label += " end";
     scene.supports.push_back(s);
   }
   scene.highlighted_support = d.clamp ? *d.clamp : -1;
+  scene.highlight_label = "where the effect acts";
   scene.gravity = spec.gravity;
   return scene;
 }

@@ -70,8 +70,11 @@ void DrawSupports(Image& image, const ViewCamera& camera, const Scene& scene) {
     const std::string label = support.label.empty() ? std::to_string(i + 1) : support.label;
     if (label.find_first_not_of(' ') == std::string::npos) continue;  // asked to be unlabelled
     // Label up and to the right, on a white halo so it stays legible over the tube.
-    const double lx = c.x() + 10, ly = c.y() - 9;
     const double w = font.Width(label, kLabelSize);
+    // To the left instead where the panel's edge would cut it.
+    double lx = c.x() + 10;
+    if (lx + w > camera.x + camera.width - 4) lx = c.x() - 10 - w;
+    const double ly = c.y() - 9;
     FillRect(image, lx - 2, ly - 12, lx + w + 2, ly + 4, Rgb{255, 255, 255}, 0.8);
     font.Draw(image, lx, ly, label, kLabelSize, kInk);
   }
@@ -179,15 +182,24 @@ int DrawLegend(Image& image, int x, int y, const std::vector<const Scene*>& scen
   }
   Font& font = Font::Get(FontWeight::kRegular);
   const int step = 24;
+  const std::string ghost_name =
+      scenes.front()->ghosts.empty() || scenes.front()->ghosts.front().name.empty()
+          ? "reference"
+          : scenes.front()->ghosts.front().name;
+  const std::string highlight_name = scenes.front()->highlight_label;
+  // Moved left as far as the longest entry needs, so no entry runs off the picture.
+  double widest = 0;
+  for (const std::string& text : {ghost_name, highlight_name, std::string("largest deviation"),
+                                  std::string("scan points")})
+    widest = std::max(widest, font.Width(text, kLabelSize));
+  x = std::min(x, static_cast<int>(image.width - 26 - widest - 8));
   auto entry = [&](const std::string& text) {
     font.Draw(image, x + 26, y + 5, text, kLabelSize, kInk);
     y += step;
   };
   if (ghost) {
     StrokeSegment(image, {x + 0.0, y + 0.0}, {x + 18.0, y + 0.0}, 1.8, Rgb{140, 140, 140});
-    entry(scenes.front()->ghosts.empty() ? "reference" : scenes.front()->ghosts.front().name.empty()
-                                                              ? "reference"
-                                                              : scenes.front()->ghosts.front().name);
+    entry(ghost_name);
   }
   for (int k = 0; k < 3; ++k) {
     if (!kinds[k]) continue;
@@ -209,7 +221,7 @@ int DrawLegend(Image& image, int x, int y, const std::vector<const Scene*>& scen
   }
   if (highlight) {
     FillRect(image, x, y - 5, x + 18, y + 5, kHighlight, 0.45);
-    entry("highlighted");
+    entry(highlight_name);
   }
   return y;
 }

@@ -70,6 +70,7 @@ struct Scene {
   Eigen::Matrix3Xd scan_points;  // 3 x m [m], already sub-sampled by the caller; may be empty
   std::vector<ArcHighlight> highlights;
   int highlighted_support = -1;  // index into `supports`, -1 for none
+  std::string highlight_label = "highlighted";  // the legend's words for the highlights
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // 3 [m/s^2]; zero hides the arrow
   bool show_scale_bar = true;
   /// Colour-bar range in mm; when unset it spans the tubes' deviations (from 0 when all >= 0).
