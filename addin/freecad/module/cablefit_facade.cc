@@ -3,6 +3,8 @@
 // thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
 #include "cablefit_facade.h"
 
+#include "cablefit/app/kbl_input.h"
+
 #include <chrono>
 #include <exception>
 #include <filesystem>
@@ -101,7 +103,16 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   const bool cancel_at_read =
       progress && !progress(0.0, "read " + fs::path(input).filename().string());
   auto t0 = Clock::now();
-  f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
+  if (addin::IsKblInput(input)) {
+    // As the command line: the file's own physics per segment, the user's harness.json over it.
+    addin::KblInput kbl = addin::ReadKblInput(input, config);
+    f.drawing = std::move(kbl.drawing);
+    config = std::move(kbl.config);
+    f.cable_json = std::move(kbl.cable_json);
+    f.notes = std::move(kbl.notes);
+  } else {
+    f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
+  }
   addin::ApplyCableSelection(config, &f.drawing);
   f.read_ok = true;
   f.times.read = Since(t0);

@@ -134,7 +134,7 @@ PYBIND11_MODULE(cablefit_native, m) {
       },
       py::arg("input"), py::arg("config") = "", py::arg("accuracy") = 1e-6,
       py::arg("mesh_unit") = "mm", py::arg("progress") = py::none(), py::arg("timeout") = 0.0,
-      "Relax every cable of a STEP/IGES/mesh file like `cablefit relax INPUT --config CONFIG "
+      "Relax every cable of a STEP/IGES/KBL/mesh file like `cablefit relax INPUT --config CONFIG "
       "--timeout T`. progress(fraction, stage) returning False (or raising) cancels.");
 
   m.def("deviation_colour", &cablefit::freecad::DeviationColour, py::arg("value"), py::arg("lo"),

@@ -1,5 +1,5 @@
 # The workbench in FreeCAD's GUI (run under Xvfb by CMakeLists.txt): the workbench activates with
-# its six commands in a toolbar and a menu, and the commands run as a user runs them (selection +
+# its seven commands in a toolbar and a menu, and the commands run as a user runs them (selection +
 # Gui.runCommand; the file dialogs of Diagnose/Export report are bypassed by calling the methods
 # they hand the chosen path to), with FreeCAD's progress indicator, the deviation colours and the
 # legend. A failing solve must leave the document usable. Same environment as workbench_test.py.
@@ -15,7 +15,7 @@ import FreeCADGui  # noqa: E402
 import Part  # noqa: E402
 from PySide import QtCore, QtGui  # noqa: E402
 
-NAMES = ["Cablefit_MakePhysical", "Cablefit_AddSupport", "Cablefit_RelaxHarness",
+NAMES = ["Cablefit_RelaxFile", "Cablefit_MakePhysical", "Cablefit_AddSupport", "Cablefit_RelaxHarness",
          "Cablefit_DeviationColours", "Cablefit_DiagnoseRecording", "Cablefit_ExportReport"]
 
 
@@ -31,11 +31,11 @@ def run():
              {"__name__": "InitGui"})
     FreeCADGui.activateWorkbench("CablefitWorkbench")
     from cablefit_workbench import cable, commands
-    check(all(n in FreeCADGui.listCommands() for n in NAMES), "all six commands registered")
+    check(all(n in FreeCADGui.listCommands() for n in NAMES), "all seven commands registered")
     mw = FreeCADGui.getMainWindow()
     bar = [t for t in mw.findChildren(QtGui.QToolBar) if t.windowTitle() == "Cablefit"]
-    check(bar and len([a for a in bar[0].actions() if not a.isSeparator()]) == 6,
-          "Cablefit toolbar with six buttons")
+    check(bar and len([a for a in bar[0].actions() if not a.isSeparator()]) == len(NAMES),
+          "Cablefit toolbar with a button per command")
     check(all(not a.icon().isNull() and a.toolTip() for a in bar[0].actions()),
           "every button has an icon and a tooltip")
     check(any(m.title() == "Cablefit" for m in mw.menuBar().findChildren(QtGui.QMenu)),

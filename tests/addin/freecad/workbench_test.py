@@ -346,7 +346,28 @@ def test_tube_source():
     compare_with_cli(c, cli_relax([c], out_dir("tube_source"))["cables"][0])
 
 
-TESTS = {"relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
+def test_kbl_file():
+    """A KBL harness relaxed in FreeCAD as the CLI relaxes it: every segment a tube in the
+    document, the same largest deviations as `cablefit relax`."""
+    path = os.path.join(ENV["CABLEFIT_SHARED_DIR"], "kbl",
+                        "kblxml_2.3sr-1_000971619_ltgs_movo_170718.kbl")
+    doc = FreeCAD.newDocument("kbl")
+    relaxation, group = engine.relax_file(path, doc)
+    check(len(relaxation.cables) == 30, "30 segments: %d" % len(relaxation.cables))
+    failed = [r.name for r in relaxation.cables if not r.ok]
+    check(not failed, "every segment relaxed: failed %s" % failed)
+    check(len(group.Group) == 30, "30 objects in the group: %d" % len(group.Group))
+    check(all(o.Shape.Solids for o in group.Group), "every cable is a tube")
+    folder = out_dir("kbl_file")
+    run_cli("relax", path, "--out", folder, "--no-pictures", "--quiet")
+    with open(os.path.join(folder, os.path.splitext(os.path.basename(path))[0] + ".json")) as f:
+        cli = {c["name"]: c for c in json.load(f)["cables"]}
+    worst = max(abs(r.max_deviation - cli[r.name]["deviation"]["max"]) for r in relaxation.cables)
+    check(worst < 1e-9, "largest deviations as the CLI's within %.3g m" % worst)
+    print("KBL in FreeCAD: 30 tubes, deviations as the CLI's within %.3g m" % worst)
+
+
+TESTS = {"kbl_file": test_kbl_file, "relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
          "colours": test_colours, "diagnose": test_diagnose, "report": test_report,
          "errors": test_errors, "tube_source": test_tube_source}
 

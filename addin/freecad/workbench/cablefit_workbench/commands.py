@@ -186,7 +186,39 @@ class ExportReport:
         return written[0] if written else None
 
 
-COMMANDS = [("Cablefit_MakePhysical", MakePhysical()), ("Cablefit_AddSupport", AddSupport()),
+class RelaxFile:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_relax"), "MenuText": "Relax a harness file",
+                "ToolTip": "Relax every cable of a STEP, IGES, KBL (VDA 4964) or mesh file as "
+                           "`cablefit relax` does and add the relaxed cables to the document"}
+
+    def IsActive(self):
+        return True
+
+    def Activated(self):
+        from PySide import QtGui
+        path, _ = QtGui.QFileDialog.getOpenFileName(
+            None, "Harness file", "",
+            "Harness files (*.step *.stp *.igs *.iges *.kbl *.stl *.obj *.ply *.gltf *.glb)")
+        if not path:
+            return
+
+        def run():
+            doc = FreeCAD.ActiveDocument or FreeCAD.newDocument("Harness")
+            bar = gui_progress.ProgressBar("cablefit: relax " + path)
+            try:
+                relaxation, _ = engine.relax_file(path, doc, "", bar)
+            finally:
+                bar.close()
+            failed = [r.name for r in relaxation.cables if not r.ok]
+            FreeCAD.Console.PrintMessage("cablefit: %s: %d cables, %d failed\n" % (
+                path, len(relaxation.cables), len(failed)))
+            FreeCADGui.SendMsgToActiveView("ViewFit")
+        _guarded("Relax a harness file", run)
+
+
+COMMANDS = [("Cablefit_RelaxFile", RelaxFile()),
+            ("Cablefit_MakePhysical", MakePhysical()), ("Cablefit_AddSupport", AddSupport()),
             ("Cablefit_RelaxHarness", RelaxHarness()),
             ("Cablefit_DeviationColours", DeviationColours()),
             ("Cablefit_DiagnoseRecording", DiagnoseRecording()),

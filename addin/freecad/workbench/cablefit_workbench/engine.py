@@ -176,6 +176,40 @@ def relax(cables, progress=None, keep_folder=None):
         shutil.rmtree(scratch, ignore_errors=True)
 
 
+def relax_file(path, doc, config="", progress=None):
+    """Relaxes a harness file as `cablefit relax PATH --config CONFIG` does (STEP, IGES, KBL or
+    a mesh in mm) and adds its cables to `doc` in a group named after the file: each relaxed
+    cable as its tube, labelled with its name, with its largest deviation and status; a failed
+    one as its drawn route. Returns (relaxation, group)."""
+    relaxation = native().relax(path, config, 1e-6, "mm", progress)
+    stem = os.path.splitext(os.path.basename(path))[0]
+    group = doc.addObject("App::DocumentObjectGroup", "Harness")
+    group.Label = stem
+    scratch = tempfile.mkdtemp(prefix="cablefit-")
+    try:
+        for i, r in enumerate(relaxation.cables):
+            o = doc.addObject("Part::Feature", "Relaxed")
+            o.Label = r.name
+            o.addProperty("App::PropertyString", "Status", "Cablefit", "relaxed, or why not")
+            o.addProperty("App::PropertyLength", "MaxDeviation", "Cablefit",
+                          "Largest distance of the relaxed cable to its drawn route")
+            o.addProperty("App::PropertyLength", "Diameter", "Cablefit", "Diameter used")
+            o.Status = "relaxed" if r.ok else "failed: " + r.error
+            o.Diameter = r.diameter * MM
+            if r.ok:
+                tube = os.path.join(scratch, "tube-%d.step" % i)
+                relaxation.write_step(tube, False, i)
+                o.Shape = Part.read(tube)
+                o.MaxDeviation = r.max_deviation * MM
+            elif r.drawn.shape[1] >= 2:
+                o.Shape = Part.makePolygon([FreeCAD.Vector(*(MM * p)) for p in r.drawn.T])
+            group.addObject(o)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    doc.recompute()
+    return relaxation, group
+
+
 def store(cable, r, tube):
     """Writes one relaxed cable into the object's output properties (kept in the .FCStd, so a
     reloaded document shows and colours it without solving again)."""
