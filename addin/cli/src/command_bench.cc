@@ -12,6 +12,7 @@
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/case_reader.h"
+#include "bench_diagnose.h"
 #include "bench_motion.h"
 
 namespace cablefit::addin {
@@ -174,13 +175,19 @@ int RunBench(const std::string& case_path, int reps) {
 
 void RegisterBenchCommand(CLI::App& app, int* exit_code) {
   auto case_path = std::make_shared<std::string>();
+  auto diagnose_dir = std::make_shared<std::string>();
   auto reps = std::make_shared<int>(21);
   auto* cmd = app.add_subcommand("bench", "Print performance figures (name: value unit)");
   cmd->add_option("--case", *case_path, "case.json to time instead of the built-in sagging cable");
   cmd->add_option("--repeat", *reps, "repetitions per figure (the median is printed)")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  cmd->callback([=] { *exit_code = RunBench(*case_path, *reps); });
+  cmd->add_option("--diagnose", *diagnose_dir,
+                  "instead: time the diagnosis of every case under DIR on one thread (per case, "
+                  "median and worst)");
+  cmd->callback([=] {
+    *exit_code = diagnose_dir->empty() ? RunBench(*case_path, *reps) : BenchDiagnose(*diagnose_dir);
+  });
 }
 
 }  // namespace cablefit::addin

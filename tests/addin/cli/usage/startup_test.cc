@@ -62,5 +62,17 @@ TEST(Startup, SimulateGivesTheSameResultInEitherExecutable) {
   EXPECT_NE(relax.err.find("missing.step"), std::string::npos) << relax.err;
 }
 
+TEST(Startup, BenchTimesTheDiagnosisOfEveryCaseUnderAFolder) {
+  const fs::path cases = testing::SourceDir() / "tests/data/cases/public";
+  const auto run = testing::RunCablefit("bench --diagnose " + Q(cases / "sample-force-none") + " " +
+                                        "--repeat 1");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("diagnose_sample-force-none: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(" s (force, none)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("diagnose_force_worst: "), std::string::npos) << run.out;
+  const auto none = testing::RunCablefit("bench --diagnose " + Q(cases / "no-such-folder"));
+  EXPECT_EQ(none.exit_code, 2) << none.err;
+}
+
 }  // namespace
 }  // namespace cablefit
