@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include <atomic>
 #include <stdexcept>
 #include <string>
@@ -27,6 +30,9 @@ TEST(ParallelFor, TheLowestFailedIndexIsRethrownAndNoMoreAreStarted) {
     ParallelFor(1000, 3, [&](int i) {
       ++started;
       if (i == 7 || i == 9) throw std::runtime_error("item " + std::to_string(i));
+      // Items that take a while, as real ones do: on a loaded machine the thread holding item 7
+      // can be descheduled before it throws, and instant items would all be started by then.
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
     });
     FAIL() << "no exception";
   } catch (const std::runtime_error& e) {
