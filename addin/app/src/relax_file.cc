@@ -259,7 +259,7 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
         cables.back()["kbl"] = it->second;
     }
   }
-  // Per cable, its smallest clearance to anything it does not rest on (new in issue 25).
+  // Per cable, its smallest clearance to anything it does not rest on.
   for (json::Json& c : cables) {
     const ClearancePair* least = nullptr;
     for (const ClearancePair& p : f.clearances) {

@@ -288,7 +288,7 @@ int RunRelax(const RelaxArgs& a) {
   for (int k = 0; k < nj; ++k)
     files[static_cast<size_t>(jobs[static_cast<size_t>(k)].file)].times.relax +=
         job_seconds[static_cast<size_t>(k)];
-  // Clearance of the relaxed cables (issue 25): the violations on stdout, all pairs in the JSON.
+  // Clearance of the relaxed cables: the violations on stdout, all pairs in the JSON.
   for (RelaxedFile& f : files) {
     if (!f.read_ok) continue;
     MeasureFileClearances(ConfigOf(f, config), &f);

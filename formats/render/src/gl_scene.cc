@@ -142,6 +142,23 @@ void DrawMesh(const TubeMesh& mesh) {
   glDisableClientState(GL_VERTEX_ARRAY);
 }
 
+// One flat colour over a mesh's triangles (positions only), blended and without depth writes:
+// what lies behind it (a cable in a clip, a tube inside its halo) stays visible.
+void DrawTranslucent(const TubeMesh& mesh, float r, float g, float b, float alpha) {
+  if (mesh.indices.empty()) return;
+  glEnable(GL_BLEND);
+  glDepthMask(GL_FALSE);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glColor4f(r, g, b, alpha);
+  glVertexPointer(3, GL_FLOAT, 0, mesh.positions.data());
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.indices.size()), GL_UNSIGNED_INT,
+                 mesh.indices.data());
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
 void DrawPoints(const Eigen::Matrix3Xd& points, GLenum mode) {
   if (points.cols() == 0) return;
   const Eigen::Matrix3Xf p = points.cast<float>();
@@ -234,17 +251,7 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
     // around the highlighted stretch remains and the deviation colours stay untouched.
     if (!m.halos.indices.empty()) {
       glUseProgram(0);
-      glEnable(GL_BLEND);
-      glDepthMask(GL_FALSE);
-      glDisableClientState(GL_COLOR_ARRAY);
-      glEnableClientState(GL_VERTEX_ARRAY);
-      glColor4f(214 / 255.0f, 39 / 255.0f, 40 / 255.0f, 0.35f);
-      glVertexPointer(3, GL_FLOAT, 0, m.halos.positions.data());
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.halos.indices.size()), GL_UNSIGNED_INT,
-                     m.halos.indices.data());
-      glDisableClientState(GL_VERTEX_ARRAY);
-      glDepthMask(GL_TRUE);
-      glDisable(GL_BLEND);
+      DrawTranslucent(m.halos, 214 / 255.0f, 39 / 255.0f, 40 / 255.0f, 0.35f);
     }
     glUseProgram(program);
     DrawMesh(m.tubes);
@@ -255,18 +262,7 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
       DrawPoints(ghost.points, GL_LINE_STRIP);
     }
     // Parts last, translucent and without depth writes: a cable inside a clip shows through.
-    if (!m.solids.indices.empty()) {
-      glEnable(GL_BLEND);
-      glDepthMask(GL_FALSE);
-      glEnableClientState(GL_VERTEX_ARRAY);
-      glColor4f(0.45f, 0.47f, 0.52f, 0.22f);
-      glVertexPointer(3, GL_FLOAT, 0, m.solids.positions.data());
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.solids.indices.size()), GL_UNSIGNED_INT,
-                     m.solids.indices.data());
-      glDisableClientState(GL_VERTEX_ARRAY);
-      glDepthMask(GL_TRUE);
-      glDisable(GL_BLEND);
-    }
+    DrawTranslucent(m.solids, 0.45f, 0.47f, 0.52f, 0.22f);
     if (options.show_scan_points && scene.scan_points.cols() > 0) {
       glPointSize(static_cast<float>(1.5 * s));
       glColor3ub(70, 70, 70);
