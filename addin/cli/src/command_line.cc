@@ -25,7 +25,8 @@ int CheckStandardOutput(const CLI::App& app, int exit_code) {
   if (flushed && !std::ferror(stdout)) return exit_code;
   std::fprintf(stderr, "cablefit: cannot write the standard output: %s\n",
                error != 0 ? std::strerror(error) : "write error");
-  if (app.got_subcommand("section") || app.got_subcommand("bench")) return kExitUsage;
+  for (const CLI::App* sub : app.get_subcommands())
+    if (sub->get_name() == "section" || sub->get_name() == "bench") return kExitUsage;
   return exit_code == kExitOk ? kExitSomeFailed : exit_code;
 }
 

@@ -143,5 +143,19 @@ TEST(OutputFolder, UnwritableStandardOutputIsAFailure) {
   EXPECT_NE(Bytes(err).find("standard output"), std::string::npos) << Bytes(err);
 }
 
+// simulate runs in the start-up executable, which registers only some commands: asking it
+// about a command it does not have once aborted the process here.
+TEST(OutputFolder, UnwritableStandardOutputOfSimulateIsAFailureNotACrash) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const fs::path dir = testing::FreshTempDir("simulate_stdout_full");
+  const fs::path err = dir / "err.txt";
+  const std::string case_dir = (testing::SourceDir() / "tests/data/cases/public/sample-none").string();
+  const int status = std::system((Q(testing::CablefitBinary()) + " simulate " + Q(case_dir) +
+                                  " --out " + Q(dir / "out") + " > /dev/full 2> " + Q(err)).c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << Bytes(err);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << Bytes(err);
+  EXPECT_NE(Bytes(err).find("standard output"), std::string::npos) << Bytes(err);
+}
+
 }  // namespace
 }  // namespace cablefit
