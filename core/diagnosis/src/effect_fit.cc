@@ -12,11 +12,13 @@
 namespace cablefit {
 namespace {
 
+// `patient`: with the solver's continuation, for the evaluations a run cannot do without (its
+// start, the fitted result); the others are Levenberg-Marquardt's trial steps, which fail fast.
 bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eigen::VectorXd* r,
-              RodSolution* solution = nullptr) {
+              RodSolution* solution = nullptr, bool patient = false) {
   SimulationResult res;
   try {
-    res = sim->Resimulate(spec);
+    res = patient ? sim->ResimulatePatiently(spec) : sim->Resimulate(spec);
   } catch (const InvalidInput&) {
     return false;
   }
@@ -53,8 +55,11 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     int branch = 0;
   };
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
+    bool first = true;
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
-      return Residual(ctx, &r->sim, m.apply(x), res);
+      const bool patient = first;
+      first = false;
+      return Residual(ctx, &r->sim, m.apply(x), res, nullptr, patient);
     };
     LmOptions opt;
     opt.max_iterations = iterations;
@@ -91,7 +96,9 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     runs = std::move(kept);
     ParallelFor(static_cast<int>(runs.size()), threads, [&](int j) {
       Run& r = runs[static_cast<size_t>(j)];
+      const LmResult screened = r.lm;
       run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
+      if (!r.lm.ok || r.lm.cost > screened.cost) r.lm = screened;
     });
     std::stable_sort(runs.begin(), runs.end(), by_cost);
   }
@@ -101,9 +108,13 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   if (!runs.empty())
     for (int more = 0; more < 3 && !runs.front().lm.converged; ++more) {
       Run& r = runs.front();
-      const double before = r.lm.cost;
+      const LmResult before = r.lm;
       run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
-      if (!(r.lm.cost < (1.0 - 1e-3) * before)) break;
+      if (!r.lm.ok || r.lm.cost > before.cost) {  // a run that could not start changes nothing
+        r.lm = before;
+        break;
+      }
+      if (!(r.lm.cost < (1.0 - 1e-3) * before.cost)) break;
     }
   Fit best;
   best.model = &m;
@@ -112,8 +123,9 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     best.cost = runs.front().lm.cost;
     best.branch = runs.front().branch;
     best.converged = runs.front().lm.converged;
-    Residual(ctx, &runs.front().sim, m.apply(best.x), &best.offsets, &best.solution);
-    best.ok = true;
+    best.ok = Residual(ctx, &runs.front().sim, m.apply(best.x), &best.offsets, &best.solution,
+                       /*patient=*/true);
+    if (!best.ok) best.cost = INFINITY;
   }
   return best;
 }

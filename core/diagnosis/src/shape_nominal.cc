@@ -8,10 +8,22 @@
 
 namespace cablefit {
 
+namespace {
+constexpr int kFitWarmIterations = 30;
+}  // namespace
+
 SimulationOptions FitSimulationOptions(const RodSpec& nominal) {
   SimulationOptions fit_opt;
   fit_opt.coarse_element_length = nominal.length / 40;
   fit_opt.min_levels = fit_opt.max_levels = 2;
+  // Warm re-solves: a direct Newton solve only (no continuation, no load ramp), and a limit
+  // far above the 2-6 iterations a fit's step usually takes. A failed step costs the fit one
+  // cheap evaluation and a smaller step, instead of seconds of continuation.
+  StaticsOptions warm = fit_opt.statics;
+  warm.max_iterations = kFitWarmIterations;
+  warm.max_continuation_steps = 0;
+  warm.ramp_loads = true;
+  fit_opt.resimulate_statics = warm;
   return fit_opt;
 }
 

@@ -47,6 +47,7 @@ bool SimulationOptions::IsValid(std::string* why) const {
   if (!(accuracy > 0)) return fail("accuracy must be > 0");
   if (coarse_element_length < 0) return fail("coarse_element_length must be >= 0");
   if (min_levels < 1 || max_levels < min_levels) return fail("need 1 <= min_levels <= max_levels");
+  if (resimulate_statics && !resimulate_statics->IsValid(why)) return false;
   return statics.IsValid(why);
 }
 
@@ -97,12 +98,25 @@ SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* ini
 }
 
 SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
+  return ResimulateWith(spec, options_.resimulate_statics.value_or(options_.statics));
+}
+
+SimulationResult RodSimulator::ResimulatePatiently(const RodSpec& spec) {
+  return ResimulateWith(spec, options_.statics);
+}
+
+SimulationResult RodSimulator::ResimulateWith(const RodSpec& spec, const StaticsOptions& statics) {
   CABLEFIT_REQUIRE(!states_.empty(), "Resimulate needs a previous Simulate");
   const auto t0 = Clock::now();
   SimulationResult rejected;
   if (RejectInvalidOptions(&rejected)) return rejected;
   ValidateRodSpec(spec);
   std::vector<StaticsSummary> summaries;
+  // A failed re-solve leaves the simulator where it was: the next one (a fit's smaller step)
+  // starts from the last equilibrium, not from the failed solve's far-off iterate.
+  std::vector<RodModel> last_models = models_;
+  std::vector<RodState> last_states = states_;
+  const std::vector<int> last_spans = span_elements_;
   // A changed layout (a point load moved, a support added) gets new spans of the same size.
   if (SpanBreakpoints(spec).size() != span_elements_.size() + 1 ||
       spec.length != models_[0].length)
@@ -113,13 +127,20 @@ SimulationResult RodSimulator::Resimulate(const RodSpec& spec) {
     disc.refinement = static_cast<int>(level);
     RodModel model = CompileRodModel(spec, disc);
     RodState state = TransferState(models_[level], states_[level], model);
-    StaticsSummary sum = SolveStatics(model, &state, options_.statics);
+    StaticsSummary sum = SolveStatics(model, &state, statics);
     models_[level] = std::move(model);
     states_[level] = std::move(state);
     summaries.push_back(sum);
     if (!sum.converged()) break;
   }
-  return Finish(summaries, std::chrono::duration<double>(Clock::now() - t0).count());
+  SimulationResult result =
+      Finish(summaries, std::chrono::duration<double>(Clock::now() - t0).count());
+  if (!result.converged) {
+    models_ = std::move(last_models);
+    states_ = std::move(last_states);
+    span_elements_ = last_spans;
+  }
+  return result;
 }
 
 SimulationResult RodSimulator::Finish(std::vector<StaticsSummary> summaries, double seconds) {

@@ -4,6 +4,7 @@
 // does thousands of times) is re-solved warm at the same resolution.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "cablefit/core/rod/rod_model.h"
@@ -24,6 +25,10 @@ struct SimulationOptions {
   /// At least this many levels (2 gives one extrapolation; 3 also an error estimate of it).
   int min_levels = 3;
   StaticsOptions statics;
+  /// Newton options of Resimulate, when they differ from `statics`. A fit's re-solves take small
+  /// parameter steps from an equilibrium: one that needs many iterations (or continuation) is a
+  /// step too large, and failing it fast lets the fit take a smaller one instead.
+  std::optional<StaticsOptions> resimulate_statics;
 
   bool IsValid(std::string* why) const;
 };
@@ -56,11 +61,15 @@ class RodSimulator {
   /// Warm re-solve of a changed spec (same supports in number and order) at the levels of the
   /// last Simulate, each starting from its last solution.
   SimulationResult Resimulate(const RodSpec& spec);
+  /// The same with the simulator's full Newton options (`statics`, continuation included) even
+  /// where `resimulate_statics` is set: for a re-solve that must succeed if it can.
+  SimulationResult ResimulatePatiently(const RodSpec& spec);
 
   bool has_solution() const { return !states_.empty(); }
   const SimulationOptions& options() const { return options_; }
 
  private:
+  SimulationResult ResimulateWith(const RodSpec& spec, const StaticsOptions& statics);
   SimulationResult Finish(std::vector<StaticsSummary> summaries, double seconds);
   bool RejectInvalidOptions(SimulationResult* result) const;
 
