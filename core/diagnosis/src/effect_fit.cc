@@ -12,6 +12,9 @@
 namespace cablefit {
 namespace {
 
+// Accepted steps between difference Jacobians (each costs a forward solve per parameter).
+constexpr int kBroydenUpdates = 3;
+
 // `patient`: with the solver's continuation, for the evaluations a run cannot do without (its
 // start, the fitted result); the others are Levenberg-Marquardt's trial steps, which fail fast.
 bool Residual(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec, Eigen::VectorXd* r,
@@ -63,6 +66,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     };
     LmOptions opt;
     opt.max_iterations = iterations;
+    opt.max_broyden_updates = kBroydenUpdates;
     r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
   };
   // Many starts (interval and contact positions, anisotropy angles, clamp twists): a few

@@ -4,6 +4,35 @@
 #include <cmath>
 
 namespace cablefit {
+namespace {
+
+// Forward differences (backward where the forward point cannot be evaluated); false when
+// neither can.
+bool DifferenceJacobian(
+    const std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>& residual,
+    const Eigen::VectorXd& x, const Eigen::VectorXd& r, const Eigen::VectorXd& scale,
+    double relative_step, int* evaluations, Eigen::MatrixXd* jac) {
+  const int n = static_cast<int>(x.size());
+  jac->resize(r.size(), n);
+  for (int k = 0; k < n; ++k) {
+    Eigen::VectorXd xp = x;
+    const double h = relative_step * scale[k];
+    xp[k] += h;
+    Eigen::VectorXd rp;
+    ++*evaluations;
+    if (!residual(xp, &rp) || rp.size() != r.size()) {
+      xp[k] = x[k] - h;
+      ++*evaluations;
+      if (!residual(xp, &rp) || rp.size() != r.size()) return false;
+      jac->col(k) = (r - rp) / h;
+    } else {
+      jac->col(k) = (rp - r) / h;
+    }
+  }
+  return true;
+}
+
+}  // namespace
 
 LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>& residual,
                               const Eigen::VectorXd& x0, const Eigen::VectorXd& scale,
@@ -21,35 +50,28 @@ LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, E
     return res;
   }
   double mu = -1.0, nu = 2.0;
+  Eigen::MatrixXd jac;
+  // Between difference Jacobians the Jacobian is carried by Broyden's rank-one update (each
+  // difference Jacobian costs one forward solve per parameter; an update costs none). A stop is
+  // only believed on a fresh difference Jacobian.
+  bool fresh = false;
+  int updates = 0;
   for (int it = 0; it < options.max_iterations; ++it) {
     res.iterations = it + 1;
-    Eigen::MatrixXd jac(r.size(), n);
-    bool jac_ok = true;
-    for (int k = 0; k < n; ++k) {
-      Eigen::VectorXd xp = res.x;
-      const double h = options.relative_step * scale[k];
-      xp[k] += h;
-      Eigen::VectorXd rp;
-      ++res.evaluations;
-      if (!residual(xp, &rp) || rp.size() != r.size()) {
-        xp[k] = res.x[k] - h;
-        ++res.evaluations;
-        if (!residual(xp, &rp) || rp.size() != r.size()) {
-          jac_ok = false;
-          break;
-        }
-        jac.col(k) = (r - rp) / h;
-      } else {
-        jac.col(k) = (rp - r) / h;
-      }
+    if (!fresh && (it == 0 || updates >= options.max_broyden_updates)) {
+      if (!DifferenceJacobian(residual, res.x, r, scale, options.relative_step, &res.evaluations,
+                              &jac))
+        break;
+      fresh = true;
+      updates = 0;
     }
-    if (!jac_ok) break;
     // Work in scaled parameters so the damping treats every parameter alike.
     const Eigen::MatrixXd js = jac * scale.asDiagonal();
     const Eigen::MatrixXd a = js.transpose() * js;
     const Eigen::VectorXd g = js.transpose() * r;
     if (mu < 0) mu = 1e-3 * std::max(a.diagonal().maxCoeff(), 1e-300);
     bool improved = false;
+    bool stop = false;
     for (int tries = 0; tries < 12; ++tries) {
       Eigen::MatrixXd damped = a;
       damped.diagonal().array() += mu;
@@ -66,23 +88,30 @@ LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, E
         mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
         nu = 2.0;
         const double decrease = (res.cost - cn) / std::max(res.cost, 1e-300);
+        if (options.max_broyden_updates > 0) {
+          jac += (rn - r - jac * step) * step.transpose() / step.squaredNorm();
+          ++updates;
+        }
         res.x = xn;
         r = rn;
         res.cost = cn;
         improved = true;
-        if (decrease < options.cost_tolerance) {
-          res.converged = true;
-          return res;
-        }
+        stop = decrease < options.cost_tolerance;
         break;
       }
       mu *= nu;
       nu *= 2.0;
     }
-    if (!improved) {
+    if (improved && !stop) {
+      fresh = false;
+      continue;
+    }
+    if (fresh) {  // no damped step lowers the cost, or it stalled: on a true Jacobian, a minimum
       res.converged = true;
       break;
     }
+    // On an updated Jacobian: try again with a difference Jacobian before stopping.
+    updates = options.max_broyden_updates;
   }
   return res;
 }

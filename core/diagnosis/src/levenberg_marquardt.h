@@ -1,5 +1,6 @@
 // A small dense Levenberg-Marquardt (Moré 1978 damping, Nielsen's update) for the effect fits:
-// a handful of parameters, residuals from a forward rod solve, Jacobian by forward differences.
+// a handful of parameters, residuals from a forward rod solve, Jacobian by forward differences
+// (optionally carried between them by Broyden's update).
 #pragma once
 
 #include <Eigen/Core>
@@ -11,6 +12,9 @@ struct LmOptions {
   int max_iterations = 30;
   double relative_step = 1e-4;   // finite-difference step relative to `scale`
   double cost_tolerance = 1e-9;  // stop when the relative cost decrease is below this
+  /// Accepted steps between difference Jacobians, the Jacobian carried by Broyden's update in
+  /// between (0: a difference Jacobian every iteration). A stop is confirmed on a fresh one.
+  int max_broyden_updates = 0;
 };
 
 struct LmResult {
