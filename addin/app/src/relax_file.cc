@@ -245,8 +245,22 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
   for (size_t i = 0; i < f.drawing.cables.size(); ++i) {
     if (f.cables[i]) {
       cables.push_back(CableToJson(*f.cables[i], f.drawing.cables[i]));
-      if (const auto it = f.cable_json.find(f.drawing.cables[i].name); it != f.cable_json.end())
+      if (const auto it = f.cable_json.find(f.drawing.cables[i].name); it != f.cable_json.end()) {
         cables.back()["kbl"] = it->second;
+        // The length check a harness engineer asks for: the relaxed centreline (the polyline
+        // through its samples) against the segment's Virtual_length; they agree to the
+        // bundle's stretch and the sampling's chord error.
+        const Polyline& relaxed = f.cables[i]->relaxed;
+        double length = 0.0;
+        for (int k = 0; k + 1 < relaxed.size(); ++k)
+          length += (relaxed.points.col(k + 1) - relaxed.points.col(k)).norm();
+        json::Json& kbl = cables.back()["kbl"];
+        kbl["relaxed_length"] = length;
+        const json::Json& virtual_length = kbl["virtual_length"];
+        kbl["relaxed_minus_virtual_length"] =
+            virtual_length.is_number() ? json::Json(length - virtual_length.get<double>())
+                                       : json::Json();
+      }
     } else {
       // What the failed cable was, so the reader can see what could not be relaxed.
       const DrawnCable& drawn = f.drawing.cables[i];

@@ -159,6 +159,22 @@ std::vector<RelaxGroup> GroupCables(const HarnessDrawing& drawing,
   return groups;
 }
 
+NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptions& options) {
+  double total = 0.0;
+  for (const BranchSpec& b : spec.branches) total += b.length;
+  NetworkRelaxPlan out;
+  out.options.statics = options.statics;
+  out.options.element_length = std::clamp(total / 1500, 0.002, 0.01);
+  out.plan.accuracy = options.accuracy;
+  out.plan.min_levels = 2;
+  out.plan.max_levels = 2;
+  const double first_level_elements = total / out.options.element_length;
+  while (out.plan.max_levels < kMaxNetworkLevels &&
+         first_level_elements * (1 << out.plan.max_levels) <= kMaxNetworkElements)
+    ++out.plan.max_levels;
+  return out;
+}
+
 GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,
                                   const std::vector<OrientedBox>& boxes,
                                   const HarnessConfig& config, const SimulationOptions& options) {
@@ -199,22 +215,11 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   for (int k : group.obstacles) spec.obstacles.push_back({drawing.solids[k].name, drawing.solids[k].mesh});
 
   // Refined until the estimate meets the accuracy, as a single cable is (SimulateNetwork).
-  double total = 0.0, min_d = std::numeric_limits<double>::infinity();
-  for (const BranchSpec& b : spec.branches) {
-    total += b.length;
-    min_d = std::min(min_d, b.material.diameter);
-  }
-  NetworkOptions opt;
-  opt.statics = options.statics;
-  opt.element_length = std::clamp(total / 1500, 0.002, 0.01);
-  RefinementPlan plan;
-  plan.accuracy = options.accuracy;
-  plan.min_levels = 2;
-  plan.max_levels = 2;
-  const double first_level_elements = total / opt.element_length;
-  while (plan.max_levels < kMaxNetworkLevels &&
-         first_level_elements * (1 << plan.max_levels) <= kMaxNetworkElements)
-    ++plan.max_levels;
+  double min_d = std::numeric_limits<double>::infinity();
+  for (const BranchSpec& b : spec.branches) min_d = std::min(min_d, b.material.diameter);
+  const NetworkRelaxPlan planned = PlanNetworkRelax(spec, options);
+  const NetworkOptions& opt = planned.options;
+  const RefinementPlan& plan = planned.plan;
   const NetworkSimulation sim = SimulateNetwork(spec, plan, opt);
   const NetworkSolution& fine = sim.finest;
   const bool converged = sim.converged;

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/app/bench_harness.h"
+#include "cablefit/app/relax_network.h"
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/solver/rod_simulation.h"
@@ -76,6 +78,41 @@ void BenchNetwork(int reps) {
     std::printf("network_x%d_stable: %d bool\n", factor, sol.summary.stable ? 1 : 0);
     std::printf("network_x%d_per_element: %.3f us\n", factor, ms / sol.num_elements * 1e3);
   }
+}
+
+// A harness the size of the largest real KBL harness (183 segments, 184 nodes, 16 fixings)
+// solved as relax solves a network group: its refinement plan (levels until the accuracy or the
+// element cap), then once more without gravity on one level (the springback/sag split).
+void BenchKblSizedNetwork() {
+  const NetworkSpec spec = KblSizedHarness();
+  int clips = 0;
+  for (const BranchSpec& b : spec.branches)
+    for (const SupportSpec& sp : b.supports) clips += sp.kind == SupportKind::kClip;
+  std::printf("kbl_network_segments: %zu segments\n", spec.branches.size());
+  std::printf("kbl_network_junctions: %zu junctions\n", spec.junctions.size());
+  std::printf("kbl_network_fixings: %d clips\n", clips);
+  std::printf("kbl_network_length: %.3f m\n", NetworkLength(spec));
+  const NetworkRelaxPlan planned = PlanNetworkRelax(spec, SimulationOptions{});
+  const auto t0 = Clock::now();
+  const NetworkSimulation sim = SimulateNetwork(spec, planned.plan, planned.options);
+  const double solve = std::chrono::duration<double>(Clock::now() - t0).count();
+  NetworkSpec weightless = spec;
+  weightless.gravity = Vec3::Zero();
+  RefinementPlan one;
+  one.min_levels = one.max_levels = 1;
+  const auto t1 = Clock::now();
+  const NetworkSimulation split = SimulateNetwork(weightless, one, planned.options);
+  const double springback = std::chrono::duration<double>(Clock::now() - t1).count();
+  std::string levels;
+  for (int e : sim.level_elements) levels += (levels.empty() ? "" : "+") + std::to_string(e);
+  std::printf("kbl_network_levels: %s elements\n", levels.c_str());
+  std::printf("kbl_network_iterations: %d iterations\n", sim.newton_iterations);
+  std::printf("kbl_network_converged: %d bool\n", sim.converged ? 1 : 0);
+  std::printf("kbl_network_estimated_error: %.2e m\n", sim.estimated_error);
+  std::printf("kbl_network_solve: %.3f s\n", solve);
+  std::printf("kbl_network_springback_converged: %d bool\n", split.converged ? 1 : 0);
+  std::printf("kbl_network_springback: %.3f s\n", springback);
+  std::printf("kbl_network: %.3f s\n", solve + springback);
 }
 
 // The harness with clips twice as sparse, so its spans sag, over a body panel tessellated as
@@ -166,6 +203,7 @@ int RunBench(const std::string& case_path, int reps) {
     std::printf("solve_n%d_per_element: %.3f us\n", n, per);
   }
   BenchNetwork(reps);
+  BenchKblSizedNetwork();
   BenchContact(reps);
   BenchMotionSweep(spec, reps);
   return kExitOk;

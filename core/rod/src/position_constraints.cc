@@ -1,6 +1,11 @@
 // Position constraints of the supports: c_k = P_k (r(node_k) - p_k) = 0, where node positions are
 // prefix sums of h_j d3_j from the anchor support. P_k is the identity, or the two directions
 // across the support's axis for a sliding support.
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+#include <vector>
+
 #include "cablefit/core/base/internal/quaternion.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
 
@@ -22,7 +27,6 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
   const int m = model.num_constraints;
   const int n = static_cast<int>(model.items.size());
   c->setZero(m);
-  std::vector<Eigen::Triplet<double>> triplets;
   const Eigen::Matrix3Xd r = state.NodePositions(model);
   const Eigen::Matrix3d e3x = quat::Skew(Vec3::UnitZ());
   // d r_node / d theta_item of one element, shared by every support whose path crosses it (a
@@ -35,10 +39,32 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
           model.element_length[j] * quat::ToMatrix(state.q[model.element_item[j]]) * e3x;
     }
   }
-  for (size_t k = 0; k < model.supports.size(); ++k) {
+  // Supports in row order: the Jacobian is written row by row straight into its compressed
+  // storage (a network's has hundreds of thousands of entries per Newton iteration; collecting
+  // them as triplets first cost more than the rest of the evaluation).
+  std::vector<int> by_row;
+  for (size_t k = 0; k < model.supports.size(); ++k)
+    if (model.supports[k].constraint_row >= 0) by_row.push_back(static_cast<int>(k));
+  std::sort(by_row.begin(), by_row.end(), [&](int a, int b) {
+    return model.supports[a].constraint_row < model.supports[b].constraint_row;
+  });
+  if (jacobian) {
+    jacobian->resize(m, 3 * n);
+    size_t entries = 0;
+    for (int k : by_row) {
+      const RodSupport& sp = model.supports[k];
+      const int from = sp.reference >= 0 ? model.supports[sp.reference].node : -1;
+      size_t path = 0;
+      model.ForEachPathElementFrom(from, sp.node, [&](int, int) { ++path; });
+      entries += 3 * path * static_cast<size_t>(sp.constraint_rows);
+    }
+    jacobian->reserve(static_cast<Eigen::Index>(entries));
+  }
+  int next_row = 0;
+  std::vector<std::pair<int, int>> path;      // (item, element), sorted by item
+  for (int k : by_row) {
     const RodSupport& sp = model.supports[k];
-    if (sp.constraint_row < 0) continue;
-    const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
+    const auto p = ConstraintProjector(sp, state, k);
     Vec3 gap = r.col(sp.node) - state.support_position[k];
     int from = -1;
     if (sp.reference >= 0) {
@@ -48,18 +74,31 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
     }
     c->segment(sp.constraint_row, sp.constraint_rows) = p * gap;
     if (!jacobian) continue;
+    path.clear();
     model.ForEachPathElementFrom(from, sp.node, [&](int j, int sign) {
-      const int item = model.element_item[j];
-      const Eigen::Matrix3d& dr = element_dr[static_cast<size_t>(j)];
-      for (int row = 0; row < sp.constraint_rows; ++row) {
-        const Eigen::RowVector3d v = -sign * (p.row(row) * dr);
-        for (int d = 0; d < 3; ++d) triplets.emplace_back(sp.constraint_row + row, 3 * item + d, v[d]);
-      }
+      path.emplace_back(model.element_item[j], sign > 0 ? j + 1 : -(j + 1));
     });
+    std::sort(path.begin(), path.end());
+    for (; next_row < sp.constraint_row; ++next_row) jacobian->startVec(next_row);
+    for (int row = 0; row < sp.constraint_rows; ++row, ++next_row) {
+      jacobian->startVec(next_row);
+      for (size_t a = 0; a < path.size();) {
+        // Elements sharing one frame item add up into its three columns.
+        const int item = path[a].first;
+        Eigen::RowVector3d v = Eigen::RowVector3d::Zero();
+        for (; a < path.size() && path[a].first == item; ++a) {
+          const int coded = path[a].second;
+          const int j = std::abs(coded) - 1;
+          const double sign = coded > 0 ? 1.0 : -1.0;
+          v -= sign * (p.row(row) * element_dr[static_cast<size_t>(j)]);
+        }
+        for (int d = 0; d < 3; ++d) jacobian->insertBack(next_row, 3 * item + d) = v[d];
+      }
+    }
   }
   if (!jacobian) return;
-  jacobian->resize(m, 3 * n);
-  jacobian->setFromTriplets(triplets.begin(), triplets.end());
+  for (; next_row < m; ++next_row) jacobian->startVec(next_row);
+  jacobian->finalize();
 }
 
 std::vector<Vec3> SupportReactions(const RodModel& model, const RodState& state) {

@@ -51,6 +51,15 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
     EXPECT_FALSE(c.contains("error")) << c.at("name") << ": " << c.value("error", "");
     ASSERT_TRUE(c.contains("kbl")) << c.at("name");
     EXPECT_EQ(c.at("kbl").at("segment"), c.at("name"));
+    // Relaxed centreline as long as the segment's Virtual_length: the bundle barely stretches
+    // (EA of its copper) and 0.5 mm samples cut corners by far less than 0.1 %.
+    const double virtual_length = c.at("kbl").at("virtual_length").get<double>();
+    const double relaxed = c.at("kbl").at("relaxed_length").get<double>();
+    EXPECT_NEAR(relaxed, virtual_length, 1e-3 * virtual_length) << c.at("name");
+    EXPECT_NEAR(c.at("kbl").at("relaxed_minus_virtual_length").get<double>(),
+                relaxed - virtual_length, 1e-12);
+    // Every support carries its reaction.
+    for (const Json& sp : c.at("supports")) EXPECT_TRUE(sp.contains("reaction")) << c.at("name");
   }
   EXPECT_EQ(names.size(), 30u);
   for (int k = 1; k <= 30; ++k) EXPECT_TRUE(names.count("Segment_" + std::to_string(k))) << k;

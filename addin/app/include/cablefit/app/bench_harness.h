@@ -15,6 +15,21 @@ struct SyntheticHarnessSize {
 /// 30 branches, 14 junctions and about 60 clips with the default size (17.6 m of cable).
 NetworkSpec SyntheticHarness(const SyntheticHarnessSize& size = {});
 
+struct KblSizedHarnessSize {
+  int segments = 183;  // nodes = segments + 1 (a tree, as a KBL harness is)
+  int fixings = 16;    // one clip in the middle of every (segments / fixings)-th segment
+  double min_length = 0.03, max_length = 0.35;  // [m] segment lengths, uniform
+  /// Per cent of nodes that continue the previous one (a splice); the others branch off an
+  /// earlier node with fewer than four segments (a breakout).
+  int chain_percent = 10;
+};
+
+/// A harness the size of the largest real KBL harness the issue names (183 segments, 184 nodes,
+/// 16 fixings), generated deterministically: a tree whose every node of two or more segments
+/// is a junction (splice or breakout) and whose every end node is clamped (a connector), with
+/// bundle diameters of 3-12 mm. Built for `cablefit bench`.
+NetworkSpec KblSizedHarness(const KblSizedHarnessSize& size = {});
+
 /// A flat panel at height z under the x-y rectangle [lo, hi], tessellated into nx x ny cells of
 /// two triangles each facing +z (an open sheet, like a body panel exported as a surface).
 TriangleMesh FlatPanel(const Vec3& lo, const Vec3& hi, int nx, int ny);

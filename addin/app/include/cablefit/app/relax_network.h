@@ -11,6 +11,7 @@
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/harness_config.h"
 #include "cablefit/app/relax_cable.h"
+#include "cablefit/core/network/network_simulator.h"
 
 namespace cablefit::addin {
 
@@ -41,6 +42,15 @@ struct GroupRelaxation {
   std::vector<CableRelaxation> cables;
   json::Json json;
 };
+
+/// How relax discretises and refines a network: first-level elements of total length / 1500
+/// within [2 mm, 1 cm], at least two levels, a third and fourth while they stay within 12000
+/// elements; the requested accuracy and statics options from `options`.
+struct NetworkRelaxPlan {
+  NetworkOptions options;
+  RefinementPlan plan;
+};
+NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptions& options);
 
 /// Solves a network group from the drawn routes (two resolutions, Richardson-extrapolated).
 /// Throws InvalidInput for an invalid set-up; a solver failure is reported per cable.
