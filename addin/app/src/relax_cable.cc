@@ -167,6 +167,14 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
                                   "75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the annulus)"
                             : std::string(kDefaultMaterialNote));
   }
+  if (drawn.flat) {
+    out.flat_width = drawn.flat->width;
+    out.flat_thickness = drawn.flat->thickness;
+    out.notes.push_back("flat " + Millimetres(drawn.flat->width) + " x " +
+                        Millimetres(drawn.flat->thickness) +
+                        ": relaxed with its section's two bending stiffnesses, clamped as drawn; "
+                        "the relaxed STEP draws it as a round tube of its width");
+  }
   out.spec.material.diameter = diameter;
   // A cable drawn taut between two supports has a tension only through its stretch: a material
   // without EA gets the bundle estimate's, which only matters where there is no slack.
@@ -417,6 +425,8 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
     Json s = {{"kind", ToString(sp.kind)},       {"s", sp.s},
               {"position", ToJson(sp.position)}, {"tangent", ToJson(sp.tangent.normalized())},
               {"sliding", sp.sliding},           {"origin", su.support_origin[k]}};
+    // A clamp holds the section's orientation: its d1 (a flat cable's drawn wide axis).
+    if (sp.kind == SupportKind::kClamp) s["normal"] = ToJson(sp.normal.normalized());
     if (k < res.solution.reactions.size()) {
       s["reaction"] = {{"force", ToJson(res.solution.reactions[k].force)},
                        {"moment", ToJson(res.solution.reactions[k].moment)}};

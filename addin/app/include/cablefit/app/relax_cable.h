@@ -62,6 +62,8 @@ struct CableSetup {
   RodSpec spec;
   bool diameter_defaulted = false;
   double bore = 0.0;  ///< [m] inner diameter of a hollow tube (hose, conduit), 0 when solid
+  /// [m] a flat cable's section (DrawnCable::flat), width along its drawn wide axis; 0 when round.
+  double flat_width = 0.0, flat_thickness = 0.0;
   bool material_defaulted = false;
   std::string material_source;  ///< "default bundle estimate", harness.json, section file
   std::vector<std::string>
