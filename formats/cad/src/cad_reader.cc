@@ -317,24 +317,16 @@ class DrawingBuilder {
     for (auto& c : cables) drawing_->cables.push_back(std::move(c));
   }
 
-  // A flat (ribbon) cable, or nullopt when `body` is no slender flat strip; a flat strip too
-  // short to be a cable says why in `skipped` and stays a solid.
+  // A flat (ribbon) cable, or nullopt when `body` is no slender flat strip.
   std::optional<DrawnCable> FlatCable(const TopoDS_Shape& body, const Style& style) {
     FlatRecoveryOptions flat_options;
     flat_options.sample_spacing = options_.sample_spacing / kMetresPerOcctUnit;
     const std::optional<RecoveredFlat> flat = RecoverFlatStrip(body, flat_options);
     if (!flat) return std::nullopt;
     const double length = ChainLength(flat->centres);
-    if (length < options_.min_tube_aspect * flat->width) {
-      char line[200];
-      std::snprintf(line, sizeof line,
-                    "a flat strip %.1f widths long (%.4g x %.4g mm), less than the %.4g of a "
-                    "slender cable: kept as a solid part",
-                    length / flat->width, flat->width, flat->thickness, options_.min_tube_aspect);
-      drawing_->skipped.push_back(
-          "'" + (style.name.empty() ? std::string("unnamed") : style.name) + "': " + line);
-      return std::nullopt;
-    }
+    // A short flat strip is a plate or a box (a bracket, a block): a solid, without a note,
+    // since such parts are common and nothing about them suggests a cable.
+    if (length < options_.min_tube_aspect * flat->width) return std::nullopt;
     DrawnCable cable;
     cable.name = style.name;
     cable.centreline = ToPolyline(flat->centres);

@@ -205,6 +205,15 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
     if (!(first.area > 0) || last.area > 1.2 * first.area ||
         first.area + last.area > 0.2 * total_area)
       return std::nullopt;
+    // A shape that is no flat strip after all is tessellated again for what it is (a part,
+    // for contact), not kept at this strip's fine deflection.
+    struct Cleaner {
+      const TopoDS_Shape& shape;
+      bool keep = false;
+      ~Cleaner() {
+        if (!keep) BRepTools::Clean(shape);
+      }
+    } cleaner{shape};
     // Fine enough that the outline's extent is within a few per cent of the section.
     const double deflection = 0.02 * std::sqrt(first.area);
     const std::optional<Outline> start = FaceOutline(first, deflection);
@@ -286,6 +295,7 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
     flat.width = Median(widths);
     flat.thickness = Median(thicknesses);
     flat.rounded_edges = fill < 0.95;
+    cleaner.keep = true;
     return flat;
   } catch (const Standard_Failure&) {
     return std::nullopt;
