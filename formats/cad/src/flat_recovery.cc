@@ -181,15 +181,21 @@ double Median(std::vector<double> v) {
 std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
                                               const FlatRecoveryOptions& options) {
   try {
+    // Planar faces first: their areas are cheap, a B-spline face's is an integration, so the
+    // whole area is only asked of a shape whose end faces pass.
     std::vector<EndFace> planar;
+    std::vector<TopoDS_Face> curved;
     double total_area = 0.0;
     for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
       const TopoDS_Face face = TopoDS::Face(ex.Current());
+      const BRepAdaptor_Surface surface(face);
+      if (surface.GetType() != GeomAbs_Plane) {
+        curved.push_back(face);
+        continue;
+      }
       GProp_GProps props;
       BRepGProp::SurfaceProperties(face, props);
       total_area += props.Mass();
-      const BRepAdaptor_Surface surface(face);
-      if (surface.GetType() != GeomAbs_Plane) continue;
       const gp_Dir n = surface.Plane().Axis().Direction();
       EndFace end{face, props.Mass(), Vector3d::Zero(), Vector3d(n.X(), n.Y(), n.Z())};
       if (face.Orientation() == TopAbs_REVERSED) end.outward = -end.outward;
@@ -202,9 +208,7 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
               [](const EndFace& a, const EndFace& b) { return a.area < b.area; });
     const EndFace& first = planar[0];
     const EndFace& last = planar[1];
-    if (!(first.area > 0) || last.area > 1.2 * first.area ||
-        first.area + last.area > 0.2 * total_area)
-      return std::nullopt;
+    if (!(first.area > 0) || last.area > 1.2 * first.area) return std::nullopt;
     // A shape that is no flat strip after all is tessellated again for what it is (a part,
     // for contact), not kept at this strip's fine deflection.
     struct Cleaner {
@@ -231,6 +235,12 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
     const double fill = outer.Mass() / (start->width * start->thickness);
     const double stadium_fill = 1 - (1 - std::numbers::pi / 4) * start->thickness / start->width;
     if (fill > 1.02 || fill < stadium_fill - 0.03) return std::nullopt;
+    for (const TopoDS_Face& face : curved) {
+      GProp_GProps props;
+      BRepGProp::SurfaceProperties(face, props);
+      total_area += props.Mass();
+    }
+    if (first.area + last.area > 0.2 * total_area) return std::nullopt;
 
     BRepMesh_IncrementalMesh(shape, deflection, false, 0.2, false);
     const TriangleSoup soup(shape, start->width);
