@@ -70,6 +70,19 @@ std::vector<Candidate> Place(std::vector<Candidate> all, double gap,
   return kept;
 }
 
+// The drawn wide axis of a flat cable at every point of `route` (its cleaned centreline),
+// square to the route.
+Eigen::Matrix3Xd FlatNormals(const DrawnCable& drawn, const Polyline& route) {
+  Eigen::Matrix3Xd normals(3, route.size());
+  for (Eigen::Index i = 0; i < route.size(); ++i) {
+    const double s = NearestArcLength(drawn.centreline, route.points.col(i));
+    const Vec3 axis = NormalAt(drawn.centreline, drawn.flat->wide_axes, s);
+    const Vec3 tangent = RouteTangent(route, route.s[i]);
+    normals.col(i) = (axis - axis.dot(tangent) * tangent).normalized();
+  }
+  return normals;
+}
+
 }  // namespace
 
 MaterialSpec DefaultBundleMaterial(double d, double bore) {
@@ -81,6 +94,26 @@ MaterialSpec DefaultBundleMaterial(double d, double bore) {
   m.torsional_stiffness = m.bending_stiffness / 1.3;
   m.linear_density = kDefaultBundleDensity * std::numbers::pi * area / 4;
   m.axial_stiffness = kDefaultAxialModulus * std::numbers::pi * area / 4;
+  return m;
+}
+
+MaterialSpec DefaultFlatMaterial(double w, double t, bool rounded_edges) {
+  // Straight part a with two half-discs of radius r at its edges (r = 0: a rectangle).
+  const double r = rounded_edges ? 0.5 * t : 0.0, a = w - 2 * r;
+  const double pi = std::numbers::pi;
+  const double area = a * t + pi * r * r;
+  const double i_easy = a * t * t * t / 12 + pi * std::pow(r, 4) / 4;
+  const double i_stiff = t * a * a * a / 12 + pi * r * r * a * a / 4 + 4.0 / 3 * a * r * r * r +
+                         pi * std::pow(r, 4) / 4;
+  MaterialSpec m;
+  m.diameter = w;
+  m.bending_stiffness = kDefaultBundleModulus * std::sqrt(i_easy * i_stiff);
+  m.bending_ratio = i_stiff / i_easy;
+  m.principal_angle = 0.5 * pi;
+  const double j = w * t * t * t * (1.0 / 3 - 0.21 * t / w * (1 - std::pow(t / w, 4) / 12));
+  m.torsional_stiffness = kDefaultBundleModulus / 2.6 * j;
+  m.linear_density = kDefaultBundleDensity * area;
+  m.axial_stiffness = kDefaultAxialModulus * area;
   return m;
 }
 
@@ -112,6 +145,17 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   if (cc.material) {
     out.spec.material = *cc.material;
     out.material_source = cc.material_source;
+  } else if (drawn.flat) {
+    const FlatSection& f = *drawn.flat;
+    out.spec.material = DefaultFlatMaterial(f.width, f.thickness, f.rounded_edges);
+    out.material_defaulted = true;
+    out.material_source = "default flat-cable estimate";
+    out.notes.push_back("material not given: a flat " + Millimetres(f.width) + " x " +
+                        Millimetres(f.thickness) + (f.rounded_edges ? " stadium" : " rectangle") +
+                        " estimated like a PVC-insulated bundle over its section (E_eff = 75 MPa, "
+                        "2000 kg/m^3), bending ratio " +
+                        std::to_string(static_cast<int>(std::lround(out.spec.material.bending_ratio))) +
+                        " between its edgewise and flatwise stiffness");
   } else {
     out.spec.material = DefaultBundleMaterial(diameter, out.bore);
     out.material_defaulted = true;
@@ -122,6 +166,14 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
                                   ") estimated like a PVC-insulated bundle over its wall (E_eff = "
                                   "75 MPa, GJ = EI/1.3, 2000 kg/m^3 over the annulus)"
                             : std::string(kDefaultMaterialNote));
+  }
+  if (drawn.flat) {
+    out.flat_width = drawn.flat->width;
+    out.flat_thickness = drawn.flat->thickness;
+    out.notes.push_back("flat " + Millimetres(drawn.flat->width) + " x " +
+                        Millimetres(drawn.flat->thickness) +
+                        ": relaxed with its section's two bending stiffnesses, clamped as drawn; "
+                        "the relaxed STEP draws it as a round tube of its width");
   }
   out.spec.material.diameter = diameter;
   // A cable drawn taut between two supports has a tension only through its stretch: a material
@@ -147,7 +199,10 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   // the start normal pointing as far "up" (against gravity) as the tangent allows.
   const Vec3 up =
       out.spec.gravity.norm() > 0 ? Vec3(-out.spec.gravity.normalized()) : Vec3::UnitZ();
-  const Eigen::Matrix3Xd normals = TransportedNormals(route, up);
+  // A flat cable's material d1 is its wide axis as drawn: the clamps hold the section as the
+  // drawing turns it.
+  const Eigen::Matrix3Xd normals =
+      drawn.flat ? FlatNormals(drawn, route) : TransportedNormals(route, up);
 
   std::vector<Candidate> candidates;
   const EndConfig start = cc.start.value_or(EndConfig{});
@@ -350,11 +405,17 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
   j["diameter"] = spec.material.diameter;
   j["diameter_defaulted"] = su.diameter_defaulted;
   j["inner_diameter"] = su.bore;  // bore of a hollow tube (hose, conduit), 0 for a solid one
+  if (drawn.flat) {
+    j["flat"] = {{"width", drawn.flat->width},
+                 {"thickness", drawn.flat->thickness},
+                 {"profile", drawn.flat->rounded_edges ? "stadium" : "rectangle"}};
+  }
   j["material"] = {{"bending_stiffness", spec.material.bending_stiffness},
                    {"axial_stiffness", spec.material.axial_stiffness},
                    {"torsional_stiffness", spec.material.torsional_stiffness},
                    {"linear_density", spec.material.linear_density},
                    {"bending_ratio", spec.material.bending_ratio},
+                   {"principal_angle", spec.material.principal_angle},
                    {"source", su.material_source},
                    {"defaulted", su.material_defaulted}};
   j["gravity"] = ToJson(spec.gravity);
@@ -364,6 +425,8 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
     Json s = {{"kind", ToString(sp.kind)},       {"s", sp.s},
               {"position", ToJson(sp.position)}, {"tangent", ToJson(sp.tangent.normalized())},
               {"sliding", sp.sliding},           {"origin", su.support_origin[k]}};
+    // A clamp holds the section's orientation: its d1 (a flat cable's drawn wide axis).
+    if (sp.kind == SupportKind::kClamp) s["normal"] = ToJson(sp.normal.normalized());
     if (k < res.solution.reactions.size()) {
       s["reaction"] = {{"force", ToJson(res.solution.reactions[k].force)},
                        {"moment", ToJson(res.solution.reactions[k].moment)}};

@@ -125,11 +125,15 @@ std::string CableLine(const RelaxedFile& f, const CableRelaxation& r) {
   }
   char tension[48] = "not computed";
   if (std::isfinite(r.max_tension)) std::snprintf(tension, sizeof tension, "%.3g N", r.max_tension);
-  char buf[640];
+  char flat[64] = "";
+  if (r.setup.flat_width > 0)
+    std::snprintf(flat, sizeof flat, ", flat %.3g x %.3g mm", 1e3 * r.setup.flat_width,
+                  1e3 * r.setup.flat_thickness);
+  char buf[704];
   std::snprintf(buf, sizeof buf,
-                "%s: %s: L=%.0f mm, max deviation %.2f mm at s=%.0f mm (rms %.2f mm), min bend "
+                "%s: %s: L=%.0f mm%s, max deviation %.2f mm at s=%.0f mm (rms %.2f mm), min bend "
                 "radius %s, max tension %s, %d supports, %s%s%s, %.1f ms",
-                f.stem.c_str(), r.setup.name.c_str(), 1e3 * r.setup.spec.length,
+                f.stem.c_str(), r.setup.name.c_str(), 1e3 * r.setup.spec.length, flat,
                 1e3 * r.max_deviation, 1e3 * r.max_deviation_s, 1e3 * r.rms_deviation, bend, tension,
                 static_cast<int>(r.setup.spec.supports.size()),
                 r.result.solution.summary.stable ? "stable" : "UNSTABLE", taut,

@@ -34,6 +34,8 @@
 #include "crash_probe.h"
 #include "curve_pieces.h"
 #include "drawn_sweeps.h"
+#include "flat_cores.h"
+#include "flat_recovery.h"
 #include "curve_routes.h"
 #include "occt_session.h"
 #include "tube_recovery.h"
@@ -276,6 +278,12 @@ class DrawingBuilder {
           tube.reset();
         }
       }
+      if (!tube && record.centres.cols() == 0) {
+        if (std::optional<DrawnCable> flat = FlatCable(body, body_style)) {
+          cables.push_back(std::move(*flat));
+          continue;
+        }
+      }
       if (tube) {
         DrawnCable cable;
         cable.name = body_style.name;
@@ -307,6 +315,32 @@ class DrawingBuilder {
       }
     }
     for (auto& c : cables) drawing_->cables.push_back(std::move(c));
+  }
+
+  // A flat (ribbon) cable, or nullopt when `body` is no slender flat strip.
+  std::optional<DrawnCable> FlatCable(const TopoDS_Shape& body, const Style& style) {
+    FlatRecoveryOptions flat_options;
+    flat_options.sample_spacing = options_.sample_spacing / kMetresPerOcctUnit;
+    const std::optional<RecoveredFlat> flat = RecoverFlatStrip(body, flat_options);
+    if (!flat) return std::nullopt;
+    const double length = ChainLength(flat->centres);
+    // A short flat strip is a plate or a box (a bracket, a block): a solid, without a note,
+    // since such parts are common and nothing about them suggests a cable.
+    if (length < options_.min_tube_aspect * flat->width) return std::nullopt;
+    DrawnCable cable;
+    cable.name = style.name;
+    cable.centreline = ToPolyline(flat->centres);
+    cable.diameter = flat->width * kMetresPerOcctUnit;
+    FlatSection section;
+    section.width = flat->width * kMetresPerOcctUnit;
+    section.thickness = flat->thickness * kMetresPerOcctUnit;
+    section.rounded_edges = flat->rounded_edges;
+    section.wide_axes = flat->wide_axes;
+    cable.flat = std::move(section);
+    cable.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
+    cable.source = CableSourceKind::kTube;
+    SetColor(&cable, style.color);
+    return cable;
   }
 
   static void SetColor(DrawnCable* cable, const std::optional<SrgbColor>& color) {
@@ -481,6 +515,7 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
     for (DrawnTube& t : tubes)
       if (t.is_cable) t.index = moved[static_cast<size_t>(t.index)];
     MergeSweepsIntoCurves(tubes, &drawing);
+    MergeCoresIntoFlatJackets(tubes, &drawing);
   } catch (const Standard_Failure& e) {
     throw FileError(path, std::string("OCCT could not read the file: ") + e.GetMessageString());
   }

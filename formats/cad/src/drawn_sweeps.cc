@@ -83,7 +83,7 @@ void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* 
     DrawnCable& curve = cables[c];
     // A bare curve takes a body; a solid tube cable (a conductor) only takes layers around it.
     const bool bare = curve.source == CableSourceKind::kCurve && !(curve.diameter > 0);
-    const bool core = curve.source == CableSourceKind::kTube && curve.diameter > 0 &&
+    const bool core = curve.source == CableSourceKind::kTube && curve.diameter > 0 && !curve.flat &&
                       !(curve.inner_diameter > 0);
     if (!(pass == 0 ? bare : core) || drop_cable[c] || curve.centreline.size() < 2) continue;
     const double core_radius = core ? 0.5 * curve.diameter : 0.0;

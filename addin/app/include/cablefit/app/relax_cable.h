@@ -45,6 +45,14 @@ inline constexpr double kDefaultDiameter = 0.008;
 /// d^2 - b^2 in their place.
 MaterialSpec DefaultBundleMaterial(double diameter, double bore = 0.0);  // [m]
 
+/// A flat cable's default material: the bundle estimate's moduli and density over a rectangle
+/// (or a stadium, `rounded_edges`) of `width` x `thickness` [m]. Bending about the wide axis
+/// (the easy way) has I = w t^3 / 12, about the thickness axis I = t w^3 / 12 (a stadium's
+/// half-discs added exactly); EI is their geometric mean, `bending_ratio` their ratio and
+/// `principal_angle` pi/2, for a material frame whose d1 is the wide axis (the stiff bending is
+/// about d2). GJ from Roark's rectangle, J = w t^3 (1/3 - 0.21 t/w (1 - t^4 / (12 w^4))).
+MaterialSpec DefaultFlatMaterial(double width, double thickness, bool rounded_edges);
+
 /// The rod set-up of one drawn cable.
 struct CableSetup {
   int cable = 0;  ///< index into HarnessDrawing::cables
@@ -54,6 +62,8 @@ struct CableSetup {
   RodSpec spec;
   bool diameter_defaulted = false;
   double bore = 0.0;  ///< [m] inner diameter of a hollow tube (hose, conduit), 0 when solid
+  /// [m] a flat cable's section (DrawnCable::flat), width along its drawn wide axis; 0 when round.
+  double flat_width = 0.0, flat_thickness = 0.0;
   bool material_defaulted = false;
   std::string material_source;  ///< "default bundle estimate", harness.json, section file
   std::vector<std::string>

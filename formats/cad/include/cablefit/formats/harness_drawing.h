@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,15 @@ struct SrgbColor {
 /// definition lives in the CAD adapter, no CAD type leaks into this header.
 struct CadShapeHandle;
 
+/// The section of a flat (ribbon) cable: a rectangle or a stadium swept along the route, its wide
+/// axis turning with the cable as drawn.
+struct FlatSection {
+  double width = 0.0;          ///< [m] along the wide axis
+  double thickness = 0.0;      ///< [m] across it
+  bool rounded_edges = false;  ///< a stadium (half-round edges), else a rectangle
+  Eigen::Matrix3Xd wide_axes;  ///< 3 x n unit, at each centreline point, square to the tangent
+};
+
 /// One cable route.
 struct DrawnCable {
   std::string name;              ///< the product/label name; "<name>#k" when one shape held k routes
@@ -37,6 +47,9 @@ struct DrawnCable {
   Polyline centreline;           ///< s from 0 [m], points 3 x n [m]
   double diameter = 0.0;         ///< [m] outer diameter; 0 when unknown (a bare curve)
   double inner_diameter = 0.0;   ///< [m] bore of a hollow tube (hose, conduit); 0 when solid
+  /// A flat cable's section (then `diameter` is its width, the envelope clearance and clips
+  /// see); absent for a round one.
+  std::optional<FlatSection> flat;
   CableSourceKind source = CableSourceKind::kCurve;
   /// How far the recovered centreline may be from the true one [m]: for a curve, the largest
   /// chord deviation of the sampling; for a tube, the RMS residual of the cross-section circle
