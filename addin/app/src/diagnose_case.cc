@@ -69,6 +69,7 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     if (r.kind == RecordingKind::kCenterline && !line_ref) line_ref = &r;
   }
   Report(progress, 0.01, "reading");
+  const auto t0 = std::chrono::steady_clock::now();
   PointCloud cloud;
   if (scan_ref) {
     cloud = ReadPly(scan_ref->path);
@@ -119,6 +120,8 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     out->observation = std::move(*from_line);
     out->observation_source = line_ref->file;
   }
+  out->observation_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ShapeDiagnosisOptions so = options.shape;
   so.progress = Stage(progress, 0.15, 1.0);
   const std::string observation_path =

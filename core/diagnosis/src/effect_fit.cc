@@ -1,6 +1,7 @@
 #include "effect_fit.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 
@@ -57,6 +58,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     LmResult lm;
     int branch = 0;
   };
+  std::atomic<int> forward_solves{0}, lm_iterations{0};  // sums: the same on any thread count
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
     bool first = true;
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
@@ -68,6 +70,8 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     opt.max_iterations = iterations;
     opt.max_broyden_updates = kBroydenUpdates;
     r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
+    forward_solves += r->lm.evaluations;
+    lm_iterations += r->lm.iterations;
   };
   // Many starts (interval and contact positions, anisotropy angles, clamp twists): a few
   // iterations each, then only the most promising ones are carried to convergence. Starts that
@@ -130,7 +134,10 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     best.ok = Residual(ctx, &runs.front().sim, m.apply(best.x), &best.offsets, &best.solution,
                        /*patient=*/true);
     if (!best.ok) best.cost = INFINITY;
+    ++forward_solves;
   }
+  best.forward_solves = forward_solves;
+  best.lm_iterations = lm_iterations;
   return best;
 }
 

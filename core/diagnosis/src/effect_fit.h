@@ -34,6 +34,8 @@ struct Fit {
   int branch = 0;           // which equilibrium of the nominal the fit started from
   bool converged = false;   // the best run's Levenberg-Marquardt stopped on a minimum
   bool ok = false;          // false: no start could be solved
+  int forward_solves = 0;   // over every start and run of the fit
+  int lm_iterations = 0;
 };
 
 /// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the

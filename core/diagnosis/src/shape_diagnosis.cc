@@ -180,13 +180,21 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   };
   ShapeDiagnosis out;
 
+  auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  auto stage = Clock::now();
   const PreparedRecording rec = PrepareRecording(nominal, recorded, options.max_points);
   out.notes = rec.notes;
   const FitContext ctx = MakeFitContext(rec.fit_points, rec.fit_s, nominal.length);
   const int n = static_cast<int>(rec.fit_s.size());
   const double noise_sigma = rec.observation.noise_sigma;
 
+  out.cost.recording_seconds = since(stage);
+  stage = Clock::now();
   const NominalBranches branches = SolveNominalBranches(nominal, rec);
+  out.cost.nominal_seconds = since(stage);
+  stage = Clock::now();
   progress(0.05, "nominal");
 
   const std::vector<EffectModel> models =
@@ -196,7 +204,11 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     fits.push_back(FitEffect(ctx, branches.bases, models[i], options.max_iterations,
                              options.threads));
     progress(0.05 + 0.85 * (i + 1) / models.size(), ToString(models[i].effect));
+    out.cost.forward_solves += fits.back().forward_solves;
+    out.cost.lm_iterations += fits.back().lm_iterations;
   }
+  out.cost.fits_seconds = since(stage);
+  stage = Clock::now();
 
   const Selection selection(models, fits, n, noise_sigma, options.min_bic_gain);
   const FinalSolves final_solves =
@@ -217,6 +229,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
 
   DescribeResult(rec, ctx, models, fits, selection.Rank(final_solves.rejected), final_solves,
                  &out);
+  out.cost.final_seconds = since(stage);
   // A best fit that leaves far more than the noise is not a diagnosis.
   if (!out.explained) out.confidence = std::min(out.confidence, 0.1);
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -70,6 +70,13 @@ TEST(Startup, BenchTimesTheDiagnosisOfEveryCaseUnderAFolder) {
   EXPECT_NE(run.out.find("diagnose_sample-force-none: "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find(" s (force, none)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("diagnose_force_worst: "), std::string::npos) << run.out;
+  // A shape case also gives the split of its time and the fits' work.
+  const auto shape = testing::RunCablefit("bench --diagnose " + Q(cases / "sample-support_contact"));
+  ASSERT_EQ(shape.exit_code, 0) << shape.err;
+  EXPECT_NE(shape.out.find(" s (shape, support_contact)"), std::string::npos) << shape.out;
+  for (const char* part : {"observation ", "nominal ", "forward solves", "LM iterations",
+                           "final solves ", "pictures and report "})
+    EXPECT_NE(shape.out.find(part), std::string::npos) << part << "\n" << shape.out;
   const auto none = testing::RunCablefit("bench --diagnose " + Q(cases / "no-such-folder"));
   EXPECT_EQ(none.exit_code, 2) << none.err;
 }

@@ -61,6 +61,7 @@ struct DiagnosedCase {
   Eigen::Matrix3Xd scan_points;         // 3 x m [m] sub-sampled raw scan (pictures), may be empty
   std::optional<ScanCenterline> scan;   // when the fit used a scan
   std::vector<std::string> notes;       // quality remarks for the report
+  double observation_seconds = 0.0;     // reading the recording, scan -> centre line
 
   // ---- force cases ----
   std::vector<DiagnosedCurve> curves;

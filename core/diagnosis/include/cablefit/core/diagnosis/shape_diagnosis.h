@@ -110,6 +110,16 @@ struct DiagnosisNote {
   double gap_as_listed = 0.0, gap_reversed = 0.0;
 };
 
+/// Where a diagnosis spent its time (what `cablefit bench --diagnose` prints).
+struct ShapeDiagnosisCost {
+  double recording_seconds = 0.0;  // checks, reversal, thinning
+  double nominal_seconds = 0.0;    // the nominal's equilibria for the fits
+  double fits_seconds = 0.0;       // every model of the catalogue fitted
+  double final_seconds = 0.0;      // nominal and chosen model at full accuracy, deviations
+  int forward_solves = 0;          // the fits' re-solves (each one a warm Newton solve)
+  int lm_iterations = 0;           // the fits' Levenberg-Marquardt iterations, all starts
+};
+
 /// The diagnosis as data; the report layer words it for a person.
 struct ShapeDiagnosis {
   ShapeEffect effect = ShapeEffect::kNone;
@@ -135,6 +145,7 @@ struct ShapeDiagnosis {
   Eigen::VectorXd baseline_deviation;     // n [m] distance of each point to the nominal curve
   Eigen::VectorXd fitted_deviation;       // n [m] ... to the fitted curve
   double seconds = 0.0;
+  ShapeDiagnosisCost cost;
 };
 
 /// The recording cannot belong to the set-up it came with (the recording, not the case, is named).
