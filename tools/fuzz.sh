@@ -3,7 +3,8 @@
 # FUZZ_SECONDS (default 30) on a scratch copy of its seed corpus. A crash, sanitizer report,
 # leak, hang (> 10 s for one input) or > 2 GB of memory fails the run; the input that did it is
 # kept in build-fuzz/artifacts/ (add it to tests/fuzz/regressions/<target>/ once fixed).
-# Usage: tools/fuzz.sh [TARGET...]   (targets: ply centerline_csv ... see tests/fuzz)
+# Usage: tools/fuzz.sh [TARGET...]   (targets: ply centerline_csv ... see tests/fuzz; with no
+# target also the CAD/mesh readers through the release build, tools/fuzz_cad.py)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${FUZZ_BUILD_DIR:-build-fuzz}
@@ -49,4 +50,17 @@ for t in "${targets[@]}"; do
   printf '%-18s %10s %10s %8s %s\n' "$t" "${runs:-?}" "${speed:-?}" "$size" "$result"
   [ $rc -eq 0 ] || grep -E "ERROR|SUMMARY|threw|==[0-9]+==" "$log" | head -20 || true
 done
+# The CAD and mesh readers run behind the crash probe (a helper process): they are fuzzed through
+# the release build's command line, by mutating the sample and third-party files (tools/fuzz_cad.py).
+cablefit_bin=${RELEASE_BUILD_DIR:-build}/addin/cablefit
+if [ $# -eq 0 ] && [ -x "$cablefit_bin" ]; then
+  if python3 tools/fuzz_cad.py "$cablefit_bin" "$SECONDS_PER_TARGET" "$artifacts" \
+      > "$BUILD_DIR/fuzz-cad.log" 2>&1; then
+    printf '%-18s %s\n' cad "$(tail -1 "$BUILD_DIR/fuzz-cad.log")"
+  else
+    printf '%-18s FAILED (see %s)\n' cad "$BUILD_DIR/fuzz-cad.log"
+    grep -A1 FINDING "$BUILD_DIR/fuzz-cad.log" | head -20 || true
+    failed=1
+  fi
+fi
 exit $failed
