@@ -76,7 +76,7 @@ std::string Mm(double metres) {
 void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing) {
   std::vector<DrawnCable>& cables = drawing->cables;
   std::vector<char> claimed(tubes.size(), 0);
-  std::vector<char> drop_cable(cables.size(), 0), drop_solid(drawing->solids.size(), 0);
+  AbsorbedTubes absorbed(*drawing);
   // Bare curves first: a conductor tube that is a curve's body goes with its curve, layers and all.
   for (int pass = 0; pass < 2; ++pass)
   for (size_t c = 0; c < cables.size(); ++c) {
@@ -85,7 +85,7 @@ void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* 
     const bool bare = curve.source == CableSourceKind::kCurve && !(curve.diameter > 0);
     const bool core = curve.source == CableSourceKind::kTube && curve.diameter > 0 && !curve.flat &&
                       !(curve.inner_diameter > 0);
-    if (!(pass == 0 ? bare : core) || drop_cable[c] || curve.centreline.size() < 2) continue;
+    if (!(pass == 0 ? bare : core) || absorbed.CableMarked(c) || curve.centreline.size() < 2) continue;
     const double core_radius = core ? 0.5 * curve.diameter : 0.0;
     std::vector<Match> matches;
     for (size_t t = 0; t < tubes.size(); ++t) {
@@ -158,21 +158,29 @@ void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* 
       const std::string why = "'" + (name.empty() ? std::string("unnamed") : name) + "': " +
                               line + ": part of that cable (" + Mm(curve.diameter) +
                               " across), not a separate part";
-      if (tube.skipped_note >= 0 && tube.skipped_note < static_cast<int>(drawing->skipped.size()))
-        drawing->skipped[tube.skipped_note] = why;
-      else
-        drawing->skipped.push_back(why);
-      (tube.is_cable ? drop_cable : drop_solid)[tube.index] = 1;
+      absorbed.Mark(tube, why, drawing);
     }
   }
-  std::vector<DrawnCable> kept_cables;
-  for (size_t c = 0; c < cables.size(); ++c)
-    if (!drop_cable[c]) kept_cables.push_back(std::move(cables[c]));
-  cables = std::move(kept_cables);
-  std::vector<DrawnSolid> kept_solids;
+  absorbed.RemoveFrom(drawing);
+}
+
+void AbsorbedTubes::Mark(const DrawnTube& tube, const std::string& why, HarnessDrawing* drawing) {
+  if (tube.skipped_note >= 0 && tube.skipped_note < static_cast<int>(drawing->skipped.size()))
+    drawing->skipped[static_cast<size_t>(tube.skipped_note)] = why;
+  else
+    drawing->skipped.push_back(why);
+  (tube.is_cable ? cable_ : solid_)[static_cast<size_t>(tube.index)] = 1;
+}
+
+void AbsorbedTubes::RemoveFrom(HarnessDrawing* drawing) const {
+  std::vector<DrawnCable> cables;
+  for (size_t c = 0; c < drawing->cables.size(); ++c)
+    if (c >= cable_.size() || !cable_[c]) cables.push_back(std::move(drawing->cables[c]));
+  drawing->cables = std::move(cables);
+  std::vector<DrawnSolid> solids;
   for (size_t k = 0; k < drawing->solids.size(); ++k)
-    if (!drop_solid[k]) kept_solids.push_back(std::move(drawing->solids[k]));
-  drawing->solids = std::move(kept_solids);
+    if (k >= solid_.size() || !solid_[k]) solids.push_back(std::move(drawing->solids[k]));
+  drawing->solids = std::move(solids);
 }
 
 }  // namespace cablefit::internal

@@ -19,6 +19,22 @@ struct DrawnTube {
   double inner_radius = 0.0; ///< [m] bore, 0 for a solid tube
 };
 
+/// Tubes found to be part of another cable (a sweep around its route, a core in its flat
+/// jacket): each marked with the line that says why, then all removed from the drawing at once
+/// (indices stay valid while marking).
+class AbsorbedTubes {
+ public:
+  explicit AbsorbedTubes(const HarnessDrawing& drawing)
+      : cable_(drawing.cables.size(), 0), solid_(drawing.solids.size(), 0) {}
+  bool CableMarked(size_t cable) const { return cable_[cable] != 0; }
+  /// Replaces the tube's own skipped line (why it was a solid) by `why`, or adds one.
+  void Mark(const DrawnTube& tube, const std::string& why, HarnessDrawing* drawing);
+  void RemoveFrom(HarnessDrawing* drawing) const;
+
+ private:
+  std::vector<char> cable_, solid_;
+};
+
 /// CAD tools that draw a cable as a route curve plus the solid swept along it (conductor,
 /// insulation, sheath) leave the same cable twice: a curve without diameter and a tube around
 /// it, which would otherwise be a second cable or an obstacle the curve lies inside. A tube

@@ -42,7 +42,7 @@ bool InsideFlat(const DrawnCable& flat, const Vec3& p) {
 
 void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing) {
   std::vector<DrawnCable>& cables = drawing->cables;
-  std::vector<char> drop_cable(cables.size(), 0), drop_solid(drawing->solids.size(), 0);
+  AbsorbedTubes absorbed(*drawing);
   for (const DrawnTube& tube : tubes) {
     if (tube.centres.cols() == 0 || tube.inner_radius > 0) continue;
     const size_t index = static_cast<size_t>(tube.index);
@@ -64,22 +64,11 @@ void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawi
                     "cable, not a separate one",
                     2e3 * tube.radius, jacket.name.c_str(), 100 * fraction);
       const std::string why = "'" + (name.empty() ? std::string("unnamed") : name) + "': " + line;
-      if (tube.skipped_note >= 0 && tube.skipped_note < static_cast<int>(drawing->skipped.size()))
-        drawing->skipped[static_cast<size_t>(tube.skipped_note)] = why;
-      else
-        drawing->skipped.push_back(why);
-      (tube.is_cable ? drop_cable : drop_solid)[index] = 1;
+      absorbed.Mark(tube, why, drawing);
       break;
     }
   }
-  std::vector<DrawnCable> kept_cables;
-  for (size_t c = 0; c < cables.size(); ++c)
-    if (!drop_cable[c]) kept_cables.push_back(std::move(cables[c]));
-  cables = std::move(kept_cables);
-  std::vector<DrawnSolid> kept_solids;
-  for (size_t k = 0; k < drawing->solids.size(); ++k)
-    if (!drop_solid[k]) kept_solids.push_back(std::move(drawing->solids[k]));
-  drawing->solids = std::move(kept_solids);
+  absorbed.RemoveFrom(drawing);
 }
 
 }  // namespace cablefit::internal
