@@ -172,8 +172,7 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.flat_thickness = drawn.flat->thickness;
     out.notes.push_back("flat " + Millimetres(drawn.flat->width) + " x " +
                         Millimetres(drawn.flat->thickness) +
-                        ": relaxed with its section's two bending stiffnesses, clamped as drawn; "
-                        "the relaxed STEP draws it as a round tube of its width");
+                        ": relaxed with its section's two bending stiffnesses, clamped as drawn");
   }
   out.spec.material.diameter = diameter;
   // A cable drawn taut between two supports has a tension only through its stretch: a material

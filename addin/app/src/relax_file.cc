@@ -16,6 +16,7 @@
 #include "cablefit/formats/mesh_file.h"
 #include "cablefit/app/kbl_input.h"
 #include "relax_route.h"
+#include "relaxed_wide_axes.h"
 
 namespace cablefit::addin {
 namespace {
@@ -200,6 +201,12 @@ std::vector<std::string> WriteRelaxedStepFile(const std::string& path, const Rel
       rc.centreline = f.cables[i] ? ForWriting(f.cables[i]->relaxed, rc.diameter, per_diameter)
                                   : AsDrawnForWriting(f.drawing.cables[i].centreline, rc.diameter,
                                                       per_diameter);
+      const DrawnCable& drawn = f.drawing.cables[i];
+      if (drawn.flat) {
+        rc.flat = *drawn.flat;
+        rc.flat->wide_axes = WrittenWideAxes(
+            rc.centreline, f.cables[i] ? &f.cables[i]->result.solution : nullptr, drawn);
+      }
       out.push_back(std::move(rc));
     }
     // The sparser resampling is a second try for the cables whose sweep failed; the file it

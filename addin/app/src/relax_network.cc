@@ -86,14 +86,17 @@ int CableIndex(const HarnessDrawing& d, const std::string& name, const std::stri
 constexpr int kMaxNetworkLevels = 4;
 constexpr double kMaxNetworkElements = 12000;
 
-// Element frames (tangents only) of a node polyline, for the bend radius.
+// Element frames (tangents only) of a node polyline, for the bend radius. d1 and d2 are not
+// known here (NaN), so that nothing takes them for the material frame (WrittenWideAxes).
 void FramesFromNodes(const Polyline& nodes, RodSolution* sol) {
   const int ne = nodes.size() - 1;
   sol->frame_s.resize(ne);
   sol->frames.resize(ne);
+  const Vec3 unknown = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   for (int j = 0; j < ne; ++j) {
     sol->frame_s[j] = 0.5 * (nodes.s[j] + nodes.s[j + 1]);
     const Vec3 t = nodes.points.col(j + 1) - nodes.points.col(j);
+    sol->frames[j].d1 = sol->frames[j].d2 = unknown;
     sol->frames[j].d3 = t.norm() > 0 ? Vec3(t.normalized()) : Vec3::UnitX();
   }
 }

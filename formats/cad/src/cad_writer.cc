@@ -1,4 +1,5 @@
-// WriteRelaxedStep: relaxed centrelines as swept tubes, input solids copied, STEP AP242.
+// WriteRelaxedStep: relaxed centrelines as swept tubes (flat strips for flat cables), input
+// solids copied, STEP AP242.
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
@@ -21,10 +22,15 @@
 namespace cablefit {
 namespace {
 
+// The rows of a centreline to write: 3 x n points [m], and for a flat strip 3 more rows with
+// its guide (the points moved half the width along the wide axis), filtered and filled together.
+using CentrelineRows = Eigen::MatrixXd;
+
 // Drops points within `min_gap` [m] of the previous kept one (the last point replaces a kept
 // one too close to it): repeated points from chained edges or a stalled solver give zero-length
 // spline parameter steps, and a median gap of zero would make FillLongGaps divide by zero.
-Eigen::Matrix3Xd DropNearDuplicates(const Eigen::Matrix3Xd& points, double min_gap) {  // 3 x n [m]
+CentrelineRows DropNearDuplicates(const CentrelineRows& rows, double min_gap) {
+  const auto points = rows.topRows<3>();
   std::vector<Eigen::Index> keep{0};
   for (Eigen::Index i = 1; i < points.cols(); ++i) {
     if ((points.col(i) - points.col(keep.back())).norm() > min_gap) keep.push_back(i);
@@ -37,9 +43,9 @@ Eigen::Matrix3Xd DropNearDuplicates(const Eigen::Matrix3Xd& points, double min_g
       keep.push_back(last);
     }
   }
-  Eigen::Matrix3Xd result(3, static_cast<Eigen::Index>(keep.size()));  // 3 x m [m]
+  CentrelineRows result(rows.rows(), static_cast<Eigen::Index>(keep.size()));
   for (size_t k = 0; k < keep.size(); ++k) {
-    result.col(static_cast<Eigen::Index>(k)) = points.col(keep[k]);
+    result.col(static_cast<Eigen::Index>(k)) = rows.col(keep[k]);
   }
   return result;
 }
@@ -47,24 +53,48 @@ Eigen::Matrix3Xd DropNearDuplicates(const Eigen::Matrix3Xd& points, double min_g
 // Adds points along segments longer than twice the median spacing: a B-spline fitted to
 // unevenly spaced points (a long straight stretch given by its two ends next to a densely
 // sampled bend) swings between them. Other points are kept as they are.
-Eigen::Matrix3Xd FillLongGaps(const Eigen::Matrix3Xd& points) {  // 3 x n [m]
+CentrelineRows FillLongGaps(const CentrelineRows& rows) {
+  const auto points = rows.topRows<3>();
   const Eigen::Index n = points.cols();
   std::vector<double> gaps(n - 1);
   for (Eigen::Index i = 0; i + 1 < n; ++i) gaps[i] = (points.col(i + 1) - points.col(i)).norm();
   std::vector<double> sorted = gaps;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double median = sorted[sorted.size() / 2];
-  std::vector<Eigen::Vector3d> out{points.col(0)};
+  std::vector<Eigen::VectorXd> out{rows.col(0)};
   for (Eigen::Index i = 0; i + 1 < n; ++i) {
     const int pieces = gaps[i] > 2 * median ? static_cast<int>(std::ceil(gaps[i] / median)) : 1;
     for (int k = 1; k <= pieces; ++k) {
       const double w = static_cast<double>(k) / pieces;
-      out.push_back((1 - w) * points.col(i) + w * points.col(i + 1));
+      out.push_back((1 - w) * rows.col(i) + w * rows.col(i + 1));
     }
   }
-  Eigen::Matrix3Xd result(3, static_cast<Eigen::Index>(out.size()));  // 3 x m [m]
+  CentrelineRows result(rows.rows(), static_cast<Eigen::Index>(out.size()));
   for (size_t i = 0; i < out.size(); ++i) result.col(static_cast<Eigen::Index>(i)) = out[i];
   return result;
+}
+
+// The rows of `relaxed` as CentrelineRows: its points, and a flat strip's guide.
+CentrelineRows RowsOf(const RelaxedCable& relaxed) {
+  const Eigen::Matrix3Xd& points = relaxed.centreline.points;  // 3 x n [m]
+  if (!relaxed.flat) return points;
+  const FlatSection& flat = *relaxed.flat;
+  if (flat.wide_axes.cols() != points.cols() || !flat.wide_axes.allFinite()) {
+    throw InvalidInput("a flat cable needs a wide axis at every centreline point");
+  }
+  if (!(flat.thickness > 0) || !(flat.width >= flat.thickness)) {
+    throw InvalidInput("a flat cable needs a positive thickness and a width at least that");
+  }
+  CentrelineRows rows(6, points.cols());
+  rows.topRows<3>() = points;
+  // Half the width beside the spine: close enough that each plane square to the spine meets it
+  // once even in a bend of a few widths' radius (MakeFlatStripSolid).
+  for (Eigen::Index i = 0; i < points.cols(); ++i) {
+    const double norm = flat.wide_axes.col(i).norm();
+    if (!(norm > 0)) throw InvalidInput("a flat cable has a zero wide axis");
+    rows.block<3, 1>(3, i) = points.col(i) + 0.5 * flat.width / norm * flat.wide_axes.col(i);
+  }
+  return rows;
 }
 
 }  // namespace
@@ -77,11 +107,11 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
   // in the order of `cables`.
   struct Pending {
     const DrawnCable* drawn = nullptr;
-    std::vector<std::size_t> spines;  // indices into `spines`; two for a closed loop
+    std::vector<std::size_t> spines;  // indices into `sweeps`; two for a closed loop
     std::string problem;              // why it cannot be written, when it cannot
   };
   std::vector<Pending> pending;
-  std::vector<std::pair<TopoDS_Wire, double>> spines;  // [mm]
+  std::vector<CableSweep> sweeps;  // [mm]
   for (const RelaxedCable& relaxed : cables) {
     if (relaxed.source_cable < 0 || relaxed.source_cable >= static_cast<int>(input.cables.size())) {
       throw InvalidInput("relaxed cable refers to input cable " +
@@ -100,33 +130,44 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
         throw InvalidInput("the relaxed centreline needs at least 2 finite points");
       }
       // A thousandth of the diameter: well below the spline tolerance below.
-      const Eigen::Matrix3Xd distinct =
-          DropNearDuplicates(relaxed.centreline.points, 1e-3 * diameter);  // 3 x m [m]
+      const CentrelineRows distinct = DropNearDuplicates(RowsOf(relaxed), 1e-3 * diameter);
       // Arc length, not end-to-end distance: a closed loop ends where it starts.
       double length = 0.0;  // [m]
-      for (Eigen::Index k = 1; k < distinct.cols(); ++k) length += (distinct.col(k) - distinct.col(k - 1)).norm();
+      for (Eigen::Index k = 1; k < distinct.cols(); ++k)
+        length += (distinct.block<3, 1>(0, k) - distinct.block<3, 1>(0, k - 1)).norm();
       if (distinct.cols() < 2 || length <= 1e-3 * diameter) {
         throw InvalidInput("the relaxed centreline has no length");
       }
-      const Eigen::Matrix3Xd points = FillLongGaps(distinct) / kMetresPerOcctUnit;  // 3 x m [mm]
-      // Approximation tolerance well below the 1 %-of-diameter accuracy promised for read-back.
-      const double tolerance = std::min(0.01, 1e-3 * diameter / kMetresPerOcctUnit);  // [mm]
-      std::vector<std::pair<TopoDS_Wire, double>> mine;
-      const auto add = [&](const Eigen::Matrix3Xd& along) {
-        mine.emplace_back(BRepBuilderAPI_MakeWire(MakeSplineEdge(along, tolerance)).Wire(),
-                          diameter / kMetresPerOcctUnit);
+      const CentrelineRows rows = FillLongGaps(distinct) / kMetresPerOcctUnit;  // [mm]
+      // Approximation tolerance well below the 1 %-of-diameter accuracy promised for read-back
+      // (of the thickness for a flat strip: its thinnest measure).
+      const double size = relaxed.flat ? relaxed.flat->thickness : diameter;  // [m]
+      const double tolerance = std::min(0.01, 1e-3 * size / kMetresPerOcctUnit);  // [mm]
+      std::vector<CableSweep> mine;
+      const auto add = [&](const CentrelineRows& along) {
+        CableSweep sweep;
+        sweep.spine = BRepBuilderAPI_MakeWire(MakeSplineEdge(along.topRows<3>(), tolerance)).Wire();
+        sweep.diameter = diameter / kMetresPerOcctUnit;
+        if (relaxed.flat) {
+          sweep.guide = BRepBuilderAPI_MakeWire(MakeSplineEdge(along.bottomRows<3>(), tolerance)).Wire();
+          sweep.flat = FlatProfile{relaxed.flat->width / kMetresPerOcctUnit,
+                                   relaxed.flat->thickness / kMetresPerOcctUnit,
+                                   relaxed.flat->rounded_edges};
+        }
+        mine.push_back(std::move(sweep));
       };
-      const Eigen::Index m = points.cols();
-      if (m >= 4 && (points.col(m - 1) - points.col(0)).norm() < diameter / kMetresPerOcctUnit) {
+      const Eigen::Index m = rows.cols();
+      if (m >= 4 && (rows.block<3, 1>(0, m - 1) - rows.block<3, 1>(0, 0)).norm() <
+                        diameter / kMetresPerOcctUnit) {
         // A closed loop: a spline through coinciding ends cannot be swept, two halves can.
-        add(points.leftCols(m / 2 + 1));
-        add(points.rightCols(m - m / 2));
+        add(rows.leftCols(m / 2 + 1));
+        add(rows.rightCols(m - m / 2));
       } else {
-        add(points);
+        add(rows);
       }
-      for (auto& spine : mine) {
-        p.spines.push_back(spines.size());
-        spines.push_back(std::move(spine));
+      for (auto& sweep : mine) {
+        p.spines.push_back(sweeps.size());
+        sweeps.push_back(std::move(sweep));
       }
     } catch (const InvalidInput& e) {
       p.problem = e.what();
@@ -135,7 +176,7 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
     }
     pending.push_back(std::move(p));
   }
-  const std::vector<TubeSweepResult> tubes = MakeTubeSolidsInChild(spines);
+  const std::vector<TubeSweepResult> tubes = MakeTubeSolidsInChild(sweeps);
   for (const Pending& p : pending) {
     std::string problem = p.problem;
     for (const std::size_t k : p.spines)

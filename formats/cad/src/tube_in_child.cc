@@ -4,7 +4,8 @@
 #include <BRep_Builder.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS.hxx>
-#include <unistd.h>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Iterator.hxx>
 
 #include <cstdio>
 #include <cstring>
@@ -17,73 +18,19 @@
 #include "occt_tube.h"
 
 namespace cablefit {
-namespace {
 
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
-
-TopoDS_Shape MakeTubeSolidInChild(const TopoDS_Wire& spine, double diameter, double max_seconds) {
-  const MemoryFile spine_file("cablefit-spine");
-  const MemoryFile tube_file("cablefit-tube");
-  if (spine_file.fd() < 0 || tube_file.fd() < 0 ||
-      !BRepTools::Write(spine, spine_file.path().c_str())) {
-    return MakeTubeSolid(spine, diameter);
-  }
-  char diameter_text[32];
-  std::snprintf(diameter_text, sizeof diameter_text, "%.17g", diameter);
-  const auto outcome =
-      RunOcctChild({"sweep", "3", diameter_text, "4"}, max_seconds,
-                   {{spine_file.fd(), 3}, {tube_file.fd(), 4}});
-  if (!outcome) return MakeTubeSolid(spine, diameter);
-  if (outcome->timed_out) {
-    throw InvalidInput("the tube sweep did not finish within " +
-                       std::to_string(static_cast<int>(max_seconds)) + " s");
-  }
-  if (outcome->signal != 0) {
-    throw InvalidInput("the tube sweep crashed in OpenCASCADE (signal " +
-                       std::to_string(outcome->signal) + ": " + ::strsignal(outcome->signal) +
-                       ")");
-  }
-  if (outcome->exit_code == kTubeSweepFailedExit) throw InvalidInput(ReadAll(tube_file.path()));
-  TopoDS_Shape tube;
-  BRep_Builder builder;
-  if (outcome->exit_code != 0 || !BRepTools::Read(tube, tube_file.path().c_str(), builder) ||
-      tube.IsNull()) {
-    throw InvalidInput("the tube sweep failed (exit status " +
-                       std::to_string(outcome->exit_code) + ")");
-  }
-  return tube;
-}
-
-int SweepTubeInHelper(int spine_fd, double diameter, int tube_fd) {
-  const std::string spine_path = "/proc/self/fd/" + std::to_string(spine_fd);
-  const std::string tube_path = "/proc/self/fd/" + std::to_string(tube_fd);
-  TopoDS_Shape spine;
-  BRep_Builder builder;
-  if (!BRepTools::Read(spine, spine_path.c_str(), builder) || spine.IsNull() ||
-      spine.ShapeType() != TopAbs_WIRE) {
-    return 4;
-  }
-  try {
-    const TopoDS_Shape tube = MakeTubeSolid(TopoDS::Wire(spine), diameter);
-    return BRepTools::Write(tube, tube_path.c_str()) ? 0 : 4;
-  } catch (const InvalidInput& e) {
-    std::ofstream(tube_path, std::ios::trunc) << e.what();
-    return kTubeSweepFailedExit;
-  }
+TopoDS_Shape MakeCableSolid(const CableSweep& sweep) {
+  return sweep.flat ? MakeFlatStripSolid(sweep.spine, sweep.guide, *sweep.flat)
+                    : MakeTubeSolid(sweep.spine, sweep.diameter);
 }
 
 namespace {
 
 // One batch file: per item a header line, then (for a shape) its BRep text of the stated size.
-//   spines: "SPINE <diameter> <bytes>\n<brep>"
-//   tubes:  "TUBE <bytes>\n<brep>" or "ERROR <message without newlines>\n"
+//   sweeps: "SPINE <diameter> <bytes>\n<brep of the spine>" (a round tube) or
+//           "STRIP <width> <thickness> <0|1 rounded edges> <bytes>\n<brep of a compound of the
+//           spine and the guide>" (a flat strip)
+//   solids: "TUBE <bytes>\n<brep>" or "ERROR <message without newlines>\n"
 std::string ShapeText(const TopoDS_Shape& shape) {
   std::ostringstream out;
   BRepTools::Write(shape, out);
@@ -105,48 +52,100 @@ std::string SingleLine(std::string text) {
   return text;
 }
 
-std::vector<TubeSweepResult> SweepEachInItsOwnChild(
-    const std::vector<std::pair<TopoDS_Wire, double>>& spines, double max_seconds) {
-  std::vector<TubeSweepResult> results(spines.size());
-  for (std::size_t i = 0; i < spines.size(); ++i) {
-    try {
-      results[i].tube = MakeTubeSolidInChild(spines[i].first, spines[i].second, max_seconds);
-    } catch (const InvalidInput& e) {
-      results[i].error = e.what();
-    }
+void WriteSweep(const CableSweep& sweep, std::ostream& out) {
+  char header[160];
+  if (sweep.flat) {
+    TopoDS_Compound both;
+    BRep_Builder builder;
+    builder.MakeCompound(both);
+    builder.Add(both, sweep.spine);
+    builder.Add(both, sweep.guide);
+    const std::string text = ShapeText(both);
+    std::snprintf(header, sizeof header, "STRIP %.17g %.17g %d %zu\n", sweep.flat->width,
+                  sweep.flat->thickness, sweep.flat->rounded_edges ? 1 : 0, text.size());
+    out << header << text;
+  } else {
+    const std::string text = ShapeText(sweep.spine);
+    std::snprintf(header, sizeof header, "SPINE %.17g %zu\n", sweep.diameter, text.size());
+    out << header << text;
   }
-  return results;
 }
 
-}  // namespace
+// The next sweep of a batch file; false at its end or when it is malformed.
+bool ReadSweep(std::istream& in, CableSweep* sweep) {
+  std::string kind;
+  if (!(in >> kind)) return false;
+  std::size_t bytes = 0;
+  TopoDS_Shape shape;
+  if (kind == "SPINE") {
+    if (!(in >> sweep->diameter >> bytes) || in.get() != '\n' || !ReadShapeText(in, bytes, &shape) ||
+        shape.ShapeType() != TopAbs_WIRE)
+      return false;
+    sweep->spine = TopoDS::Wire(shape);
+    return true;
+  }
+  FlatProfile profile;
+  int rounded = 0;
+  if (kind != "STRIP" || !(in >> profile.width >> profile.thickness >> rounded >> bytes) ||
+      in.get() != '\n' || !ReadShapeText(in, bytes, &shape) || shape.ShapeType() != TopAbs_COMPOUND)
+    return false;
+  TopoDS_Iterator it(shape);
+  if (!it.More() || it.Value().ShapeType() != TopAbs_WIRE) return false;
+  sweep->spine = TopoDS::Wire(it.Value());
+  it.Next();
+  if (!it.More() || it.Value().ShapeType() != TopAbs_WIRE) return false;
+  sweep->guide = TopoDS::Wire(it.Value());
+  profile.rounded_edges = rounded != 0;
+  sweep->flat = profile;
+  return true;
+}
 
-std::vector<TubeSweepResult> MakeTubeSolidsInChild(
-    const std::vector<std::pair<TopoDS_Wire, double>>& spines, double max_seconds) {
-  if (spines.size() <= 1) return SweepEachInItsOwnChild(spines, max_seconds);
+TubeSweepResult SweepHere(const CableSweep& sweep) {
+  TubeSweepResult r;
+  try {
+    r.tube = MakeCableSolid(sweep);
+  } catch (const InvalidInput& e) {
+    r.error = e.what();
+  } catch (const Standard_Failure& e) {
+    r.error = e.GetMessageString();
+  }
+  return r;
+}
+
+// The sweeps in one helper: the results, or (when it died, hung or wrote nonsense) nullopt with
+// `why` said. `started` is false when no helper could be started at all.
+std::optional<std::vector<TubeSweepResult>> SweepBatch(const std::vector<CableSweep>& sweeps,
+                                                       double max_seconds, std::string* why,
+                                                       bool* started) {
+  *started = false;
   const MemoryFile spines_file("cablefit-spines");
   const MemoryFile tubes_file("cablefit-tubes");
-  if (!spines_file.ok() || !tubes_file.ok()) return SweepEachInItsOwnChild(spines, max_seconds);
+  if (!spines_file.ok() || !tubes_file.ok()) return std::nullopt;
   {
     std::ofstream out(spines_file.path(), std::ios::binary | std::ios::trunc);
-    for (const auto& [spine, diameter] : spines) {
-      const std::string text = ShapeText(spine);
-      char header[96];
-      std::snprintf(header, sizeof header, "SPINE %.17g %zu\n", diameter, text.size());
-      out << header << text;
-    }
-    if (!out.flush()) return SweepEachInItsOwnChild(spines, max_seconds);
+    for (const CableSweep& sweep : sweeps) WriteSweep(sweep, out);
+    if (!out.flush()) return std::nullopt;
   }
   const auto outcome = RunOcctChild({"sweeps", "3", "4"}, max_seconds,
                                     {{spines_file.fd(), 3}, {tubes_file.fd(), 4}});
-  if (!outcome || outcome->timed_out || outcome->signal != 0 || outcome->exit_code != 0) {
-    // No helper (then each sweeps in this process), or the batch died on one of the spines.
-    return SweepEachInItsOwnChild(spines, max_seconds);
+  if (!outcome) return std::nullopt;
+  *started = true;
+  if (outcome->timed_out) {
+    *why = "the tube sweep did not finish within " + std::to_string(static_cast<int>(max_seconds)) + " s";
+    return std::nullopt;
   }
-  std::vector<TubeSweepResult> results(spines.size());
+  if (outcome->signal != 0) {
+    *why = "the tube sweep crashed in OpenCASCADE (signal " + std::to_string(outcome->signal) +
+           ": " + ::strsignal(outcome->signal) + ")";
+    return std::nullopt;
+  }
+  *why = "the tube sweep failed (exit status " + std::to_string(outcome->exit_code) + ")";
+  if (outcome->exit_code != 0) return std::nullopt;
+  std::vector<TubeSweepResult> results(sweeps.size());
   std::ifstream in(tubes_file.path(), std::ios::binary);
   for (TubeSweepResult& r : results) {
     std::string kind;
-    if (!(in >> kind)) return SweepEachInItsOwnChild(spines, max_seconds);
+    if (!(in >> kind)) return std::nullopt;
     if (kind == "ERROR") {
       in.get();  // the space
       std::getline(in, r.error);
@@ -154,7 +153,32 @@ std::vector<TubeSweepResult> MakeTubeSolidsInChild(
     }
     std::size_t bytes = 0;
     if (kind != "TUBE" || !(in >> bytes) || in.get() != '\n' || !ReadShapeText(in, bytes, &r.tube))
-      return SweepEachInItsOwnChild(spines, max_seconds);
+      return std::nullopt;
+  }
+  return results;
+}
+
+}  // namespace
+
+std::vector<TubeSweepResult> MakeTubeSolidsInChild(const std::vector<CableSweep>& sweeps,
+                                                   double max_seconds) {
+  std::string why;
+  bool started = false;
+  if (sweeps.size() > 1) {
+    if (auto all = SweepBatch(sweeps, max_seconds, &why, &started)) return *std::move(all);
+  }
+  // One helper each: a batch that died on one of the sweeps costs only that one. No helper at
+  // all: each in this process.
+  std::vector<TubeSweepResult> results(sweeps.size());
+  for (std::size_t i = 0; i < sweeps.size(); ++i) {
+    auto one = SweepBatch({sweeps[i]}, max_seconds, &why, &started);
+    if (one) {
+      results[i] = std::move(one->front());
+    } else if (started) {
+      results[i].error = why;
+    } else {
+      results[i] = SweepHere(sweeps[i]);
+    }
   }
   return results;
 }
@@ -163,22 +187,15 @@ int SweepTubesInHelper(int spines_fd, int tubes_fd) {
   std::ifstream in("/proc/self/fd/" + std::to_string(spines_fd), std::ios::binary);
   std::ofstream out("/proc/self/fd/" + std::to_string(tubes_fd), std::ios::binary | std::ios::trunc);
   if (!in || !out) return 4;
-  std::string kind;
-  while (in >> kind) {
-    double diameter = 0;
-    std::size_t bytes = 0;
-    TopoDS_Shape spine;
-    if (kind != "SPINE" || !(in >> diameter >> bytes) || in.get() != '\n' ||
-        !ReadShapeText(in, bytes, &spine) || spine.ShapeType() != TopAbs_WIRE) {
-      return 4;
-    }
-    try {
-      const std::string text = ShapeText(MakeTubeSolid(TopoDS::Wire(spine), diameter));
+  while (in >> std::ws && in.peek() != EOF) {
+    CableSweep sweep;
+    if (!ReadSweep(in, &sweep)) return 4;
+    const TubeSweepResult r = SweepHere(sweep);
+    if (r.tube.IsNull()) {
+      out << "ERROR " << SingleLine(r.error) << "\n";
+    } else {
+      const std::string text = ShapeText(r.tube);
       out << "TUBE " << text.size() << "\n" << text;
-    } catch (const InvalidInput& e) {
-      out << "ERROR " << SingleLine(e.what()) << "\n";
-    } catch (const Standard_Failure& e) {
-      out << "ERROR " << SingleLine(e.GetMessageString()) << "\n";
     }
   }
   return out.flush() ? 0 : 4;

@@ -3,10 +3,8 @@
 //   cablefit-occt-child PARENT_PID read PATH SPACING DEFLECTION AREA_FRACTION ASPECT JUNCTION_TOL
 //       reads the STEP/IGES file as ReadCadFile does; exit 0 whether or not it is valid (the
 //       read in cablefit reports the problem), non-zero or a signal only when OCCT crashed
-//   cablefit-occt-child PARENT_PID sweep SPINE_FD DIAMETER TUBE_FD
-//       sweeps the tube of SweepTubeInHelper
 //   cablefit-occt-child PARENT_PID sweeps SPINES_FD TUBES_FD
-//       sweeps every tube of a batch (SweepTubesInHelper)
+//       sweeps every tube and flat strip of a batch (SweepTubesInHelper)
 #include <sys/prctl.h>
 #include <unistd.h>
 
@@ -42,9 +40,6 @@ int Run(int argc, char** argv) {
   }
   if (mode == "sweeps" && argc == 5) {
     return cablefit::SweepTubesInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
-  }
-  if (mode == "sweep" && argc == 6) {
-    return cablefit::SweepTubeInHelper(std::atoi(argv[3]), Number(argv[4]), std::atoi(argv[5]));
   }
   return kUsage;
 }

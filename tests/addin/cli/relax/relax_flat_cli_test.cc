@@ -54,9 +54,30 @@ TEST(RelaxFlatCli, FlatCablesRelaxAsOneCableEachWithTheirSectionsAndDrawnAxes) {
   // Drawn with a little sag between clamps 0.5 m apart, it moves under a millimetre.
   EXPECT_GT(house.at("deviation").at("max").get<double>(), 0.0);
   EXPECT_LT(house.at("deviation").at("max").get<double>(), 1e-3);
-  // The relaxed STEP holds both cables (as round tubes of their width for now).
+  // The relaxed STEP holds both cables as their flat strips: read back, each is the same flat
+  // cable (section within 2 %, its relaxed length), its wide axis at each end the relaxed
+  // frame's d1 there, which the clamp holds (its normal).
   const HarnessDrawing back = ReadCadFile((out / "flat_cables.step").string());
-  EXPECT_EQ(back.cables.size(), 2u);
+  ASSERT_EQ(back.cables.size(), 2u);
+  for (const DrawnCable& c : back.cables) {
+    const Json& relaxed = testing::CableNamed(j, c.name);
+    ASSERT_TRUE(c.flat.has_value()) << c.name << " was written as a round tube";
+    EXPECT_NEAR(c.flat->width, relaxed.at("flat").at("width").get<double>(),
+                0.02 * relaxed.at("flat").at("width").get<double>()) << c.name;
+    EXPECT_NEAR(c.flat->thickness, relaxed.at("flat").at("thickness").get<double>(),
+                0.02 * relaxed.at("flat").at("thickness").get<double>()) << c.name;
+    EXPECT_EQ(c.flat->rounded_edges, relaxed.at("flat").at("profile") == "stadium") << c.name;
+    const double length = c.centreline.s[c.centreline.size() - 1];
+    EXPECT_NEAR(length, relaxed.at("length").get<double>(), 0.005 * length) << c.name;
+    for (const Json& s : relaxed.at("supports")) {
+      const Vec3 at = Vector(s.at("position"));
+      Eigen::Index k = 0;
+      const double gap = (c.centreline.points.colwise() - at).colwise().norm().minCoeff(&k);
+      EXPECT_LT(gap, 1e-4) << c.name;
+      EXPECT_GT(std::abs(c.flat->wide_axes.col(k).dot(Vector(s.at("normal")))), std::cos(0.02))
+          << c.name << " at s=" << s.at("s").get<double>();
+    }
+  }
 }
 
 }  // namespace

@@ -37,8 +37,9 @@ struct CadReadOptions {
 /// UsageError for invalid options.
 HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& options = {});
 
-/// Writes `cables` as tubes (a circle swept along a B-spline through each relaxed centreline)
-/// with the names and colours of their source cables, plus every solid of `input` unchanged, as
+/// Writes `cables` as tubes (a circle swept along a B-spline through each relaxed centreline;
+/// a cable with `flat` its rectangle or stadium, turned by its wide axes) with the names and
+/// colours of their source cables, plus every solid of `input` unchanged, as
 /// a STEP AP242 file in millimetres. Written atomically (temp file + rename). A cable without a
 /// usable centreline or diameter, or whose tube OCCT cannot sweep, throws InvalidInput; with
 /// `skipped` it is left out instead and its one-line problem appended there, so that one bad

@@ -108,6 +108,10 @@ struct RelaxedCable {
   Polyline centreline;   ///< points 3 x n [m], n >= 2
   /// Tube diameter [m] for the output; 0 = the drawn diameter of the source cable.
   double diameter = 0.0;
+  /// A flat cable's section, written as that strip instead of a round tube: its `wide_axes`
+  /// (3 x n unit, one per centreline point, square to the tangent) turn the section along the
+  /// relaxed centreline (the rod's material d1, which the clamps hold at the drawn wide axis).
+  std::optional<FlatSection> flat = std::nullopt;
 };
 
 }  // namespace cablefit
