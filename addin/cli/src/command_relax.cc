@@ -164,6 +164,7 @@ int RunRelax(const RelaxArgs& a) {
   if (!a.summary_json.empty()) CheckSummaryJsonPath(a.summary_json, inputs);
   for (const std::string& stem : stems) {
     for (const char* suffix : {".step", ".json", "-deviation.png"}) output.CheckFile(out / (stem + suffix));
+    for (const std::string& name : EnvelopeFileNames(stem)) output.CheckFile(out / name);
   }
   const int n = static_cast<int>(paths.size());
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
@@ -317,6 +318,8 @@ int RunRelax(const RelaxArgs& a) {
     try {
       bar.Update(2 * n + i, 0.1, f.stem + ": write JSON, STEP");
       auto t0 = Clock::now();
+      // The envelopes first: the JSON names them.
+      f.envelopes = WriteEnvelopeFiles(out.string(), f, ConfigOf(f, config));
       json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, ConfigOf(f, config)));
       f.times.json = Since(t0);
       t0 = Clock::now();

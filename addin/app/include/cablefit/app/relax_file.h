@@ -12,6 +12,7 @@
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_clearance.h"
+#include "cablefit/app/relax_envelope.h"
 #include "cablefit/app/relax_motion.h"
 #include "cablefit/app/relax_tolerance.h"
 
@@ -66,6 +67,8 @@ struct RelaxedFile {
   std::optional<FileMotion> motion;
   /// The harness.json tolerance envelope run on this input (RunFileTolerance); unset without one.
   std::optional<FileTolerance> tolerance;
+  /// Envelope files written next to the outputs (WriteEnvelopeFiles), empty when none.
+  std::vector<EnvelopeFiles> envelopes;
 };
 
 /// Fills f->clearances from the relaxed cables (failed ones are left out) and the drawing's
