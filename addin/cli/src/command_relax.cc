@@ -409,7 +409,8 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
                   "folders of them")
       ->required();
   cmd->add_option("--out", args->out_dir,
-                  "output folder: <stem>.step, <stem>.json, <stem>-deviation.png, report.html")
+                  "output folder: <stem>.step, <stem>.json, <stem>-deviation.png, report.html (and "
+                  "<stem>-motion-envelope.stl/.glb ... with a motion or tolerances)")
       ->required();
   cmd->add_option("--config", args->config, "harness.json: materials, supports, gravity per cable");
   cmd->add_option("--jobs", args->jobs, "parallel workers (0 = one per core)")
