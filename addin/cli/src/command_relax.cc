@@ -27,6 +27,7 @@
 #include "cablefit/app/kbl_input.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
+#include "cablefit/app/relax_motion_pictures.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
 #include "cablefit/app/relax_summary.h"
@@ -165,6 +166,8 @@ int RunRelax(const RelaxArgs& a) {
   for (const std::string& stem : stems) {
     for (const char* suffix : {".step", ".json", "-deviation.png"}) output.CheckFile(out / (stem + suffix));
     for (const std::string& name : EnvelopeFileNames(stem)) output.CheckFile(out / name);
+    output.CheckFile(out / (stem + "-motion.png"));
+    output.CheckFolder(out / MotionFramesFolder(stem));
   }
   const int n = static_cast<int>(paths.size());
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
@@ -339,6 +342,7 @@ int RunRelax(const RelaxArgs& a) {
         std::lock_guard lock(cad_mutex);
         WriteDeviationPicture((out / f.picture).string(), f, ConfigOf(f, config));
         if (a.close_ups) f.close_ups = WriteCloseUpPictures(out.string(), f, ConfigOf(f, config));
+        f.motion_pictures = WriteMotionAnimation(out.string(), f, ConfigOf(f, config));
         f.times.picture = Since(t0);
       }
       char buf[512];

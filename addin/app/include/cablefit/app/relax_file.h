@@ -14,6 +14,7 @@
 #include "cablefit/app/relax_clearance.h"
 #include "cablefit/app/relax_envelope.h"
 #include "cablefit/app/relax_motion.h"
+#include "cablefit/app/relax_motion_pictures.h"
 #include "cablefit/app/relax_tolerance.h"
 
 namespace cablefit::addin {
@@ -54,6 +55,7 @@ struct RelaxedFile {
   StageTimes times;
   std::string picture;                 ///< PNG file name next to the outputs, empty if none
   std::vector<std::string> close_ups;  ///< per cable PNG names (--close-ups), else empty
+  MotionPictures motion_pictures;      ///< the motion's animation and still frames, if any
   std::vector<json::Json> networks;    ///< per network group: junction loads, contacts
   /// The settings this input is relaxed with when the input itself carries some (a KBL file:
   /// the run's harness.json layered over them); null = the run's. See ConfigOf.
