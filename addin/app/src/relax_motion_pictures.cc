@@ -8,6 +8,7 @@
 #include "cablefit/app/relax_file.h"
 #include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/formats/apng_file.h"
+#include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/deviation_views.h"
 #include "cablefit/formats/png_file.h"
 #include "render_lock.h"
@@ -119,14 +120,19 @@ MotionPictures WriteMotionAnimation(const std::string& dir, const RelaxedFile& f
     images = RenderDeviationSequence(frames, options);
   }
   const std::filesystem::path folder(dir);
+  // Each frame encoded once: written as a still, then wrapped into the animation.
+  std::vector<std::vector<std::uint8_t>> pngs;
   for (size_t i = 0; i < images.size(); ++i) {
     char name[64];
     std::snprintf(name, sizeof name, "/pose-%03zu.png", pick[i]);
     out.frames.push_back(MotionFramesFolder(f.stem) + name);
-    WritePng((folder / out.frames.back()).string(), images[i]);
+    pngs.push_back(EncodePng(images[i]));
+    WriteFileAtomically((folder / out.frames.back()).string(),
+                        std::string(pngs.back().begin(), pngs.back().end()));
   }
   out.animation = f.stem + "-motion.png";
-  WriteApng((folder / out.animation).string(), images, {kFrameDelayMs, 0});
+  const std::vector<std::uint8_t> apng = AssembleApng(pngs, {kFrameDelayMs, 0});
+  WriteFileAtomically((folder / out.animation).string(), std::string(apng.begin(), apng.end()));
   return out;
 }
 

@@ -1,5 +1,6 @@
 #include "cablefit/formats/apng_file.h"
 
+#include <png.h>
 #include <zlib.h>
 
 #include <cstring>
@@ -33,14 +34,13 @@ void PutBe16(Bytes* out, std::uint16_t x) {
   out->push_back(static_cast<std::uint8_t>(x));
 }
 
-// The chunks of a PNG our own writer made (trusted: its length fields are not re-checked
-// beyond the buffer's end).
+// The chunks of a PNG (UsageError when a chunk runs past the end).
 std::vector<Chunk> Chunks(const Bytes& png) {
   std::vector<Chunk> chunks;
   std::size_t at = kSignature;
   while (at + 12 <= png.size()) {
     const std::uint32_t length = Be32(png, at);
-    CABLEFIT_CHECK(at + 12 + length <= png.size(), "PNG chunk past the end");
+    CABLEFIT_REQUIRE(at + 12 + length <= png.size(), "PNG chunk past the end of the file");
     Chunk c;
     c.type.assign(reinterpret_cast<const char*>(png.data() + at + 4), 4);
     c.data.assign(png.begin() + static_cast<std::ptrdiff_t>(at + 8),
@@ -64,31 +64,35 @@ void PutChunk(Bytes* out, const std::string& type, const Bytes& data) {
 
 }  // namespace
 
-std::vector<std::uint8_t> EncodeApng(const std::vector<Image>& frames, const ApngTiming& timing) {
-  CABLEFIT_REQUIRE(!frames.empty(), "an animation needs a frame");
+std::vector<std::uint8_t> AssembleApng(const std::vector<std::vector<std::uint8_t>>& pngs,
+                                       const ApngTiming& timing) {
+  CABLEFIT_REQUIRE(!pngs.empty(), "an animation needs a frame");
   CABLEFIT_REQUIRE(timing.delay_ms >= 1 && timing.delay_ms <= 65535 && timing.plays >= 0,
                    "APNG delay must be 1..65535 ms and plays >= 0");
-  for (const Image& f : frames)
-    CABLEFIT_REQUIRE(f.width == frames[0].width && f.height == frames[0].height,
-                     "every APNG frame must have the first frame's size");
-  Bytes out;
+  Bytes out, header;
   std::uint32_t sequence = 0;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    const Bytes png = EncodePng(frames[k]);
+  for (std::size_t k = 0; k < pngs.size(); ++k) {
+    const Bytes& png = pngs[k];
+    CABLEFIT_REQUIRE(png.size() > kSignature + 12 && png_sig_cmp(png.data(), 0, kSignature) == 0,
+                     "APNG frame " + std::to_string(k) + " is not a PNG");
     const std::vector<Chunk> chunks = Chunks(png);
+    CABLEFIT_REQUIRE(!chunks.empty() && chunks[0].type == "IHDR" && chunks[0].data.size() == 13,
+                     "APNG frame " + std::to_string(k) + " has no IHDR first");
     if (k == 0) {
+      header = chunks[0].data;
       out.assign(png.begin(), png.begin() + kSignature);
-      CABLEFIT_CHECK(!chunks.empty() && chunks[0].type == "IHDR", "PNG without IHDR first");
-      PutChunk(&out, "IHDR", chunks[0].data);
+      PutChunk(&out, "IHDR", header);
       Bytes actl;
-      PutBe32(&actl, static_cast<std::uint32_t>(frames.size()));
+      PutBe32(&actl, static_cast<std::uint32_t>(pngs.size()));
       PutBe32(&actl, static_cast<std::uint32_t>(timing.plays));
       PutChunk(&out, "acTL", actl);
     }
+    // Same size, depth and colour type as frame 0 (fcTL cannot change them).
+    CABLEFIT_REQUIRE(chunks[0].data == header,
+                     "every APNG frame must have the first frame's size and pixel format");
     Bytes fctl;
     PutBe32(&fctl, sequence++);
-    PutBe32(&fctl, static_cast<std::uint32_t>(frames[k].width));
-    PutBe32(&fctl, static_cast<std::uint32_t>(frames[k].height));
+    fctl.insert(fctl.end(), header.begin(), header.begin() + 8);  // width, height
     PutBe32(&fctl, 0);  // x offset
     PutBe32(&fctl, 0);  // y offset
     PutBe16(&fctl, static_cast<std::uint16_t>(timing.delay_ms));
@@ -110,6 +114,17 @@ std::vector<std::uint8_t> EncodeApng(const std::vector<Image>& frames, const Apn
   }
   PutChunk(&out, "IEND", {});
   return out;
+}
+
+std::vector<std::uint8_t> EncodeApng(const std::vector<Image>& frames, const ApngTiming& timing) {
+  CABLEFIT_REQUIRE(!frames.empty(), "an animation needs a frame");
+  for (const Image& f : frames)
+    CABLEFIT_REQUIRE(f.width == frames[0].width && f.height == frames[0].height,
+                     "every APNG frame must have the first frame's size");
+  std::vector<Bytes> pngs;
+  pngs.reserve(frames.size());
+  for (const Image& f : frames) pngs.push_back(EncodePng(f));
+  return AssembleApng(pngs, timing);
 }
 
 void WriteApng(const std::string& path, const std::vector<Image>& frames, const ApngTiming& timing) {

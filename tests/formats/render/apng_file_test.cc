@@ -99,6 +99,14 @@ TEST(ApngFile, FramesOfDifferentSizesAreRefused) {
   EXPECT_THROW(EncodeApng({Image::Filled(8, 8, Rgb{}), Image::Filled(9, 8, Rgb{})}, {}),
                UsageError);
   EXPECT_THROW(EncodeApng({}, {}), UsageError);
+  // Pre-encoded frames: the same size and pixel format, and PNGs at all.
+  const std::vector<std::uint8_t> a = EncodePng(Image::Filled(8, 8, Rgb{}));
+  const std::vector<std::uint8_t> b = EncodePng(Image::Filled(8, 9, Rgb{}));
+  EXPECT_THROW(AssembleApng({a, b}, {}), UsageError);
+  EXPECT_THROW(AssembleApng({a, {1, 2, 3}}, {}), UsageError);
+  std::vector<std::uint8_t> cut(a.begin(), a.end() - 20);
+  EXPECT_THROW(AssembleApng({a, cut}, {}), UsageError);
+  EXPECT_EQ(AssembleApng({a, a}, {}), EncodeApng({Image::Filled(8, 8, Rgb{}), Image::Filled(8, 8, Rgb{})}, {}));
 }
 
 }  // namespace

@@ -21,6 +21,12 @@ struct ApngTiming {
 /// APNG bytes of `frames` (all the same size, at least one). UsageError otherwise.
 std::vector<std::uint8_t> EncodeApng(const std::vector<Image>& frames, const ApngTiming& timing);
 
+/// APNG bytes from frames already encoded as PNG (EncodePng: same size and pixel format, at
+/// least one), so a caller that also writes the frames as stills encodes each once. UsageError
+/// otherwise.
+std::vector<std::uint8_t> AssembleApng(const std::vector<std::vector<std::uint8_t>>& pngs,
+                                       const ApngTiming& timing);
+
 /// Writes EncodeApng(frames, timing) to `path` atomically. FileError naming `path` on failure.
 void WriteApng(const std::string& path, const std::vector<Image>& frames, const ApngTiming& timing);
 
