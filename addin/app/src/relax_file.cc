@@ -300,6 +300,7 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
       cables[static_cast<size_t>(t.cable)]["tolerance"] = CableToleranceToJson(t);
     j["tolerance_problems"] = f.tolerance->problems;
   }
+  if (!f.envelopes.empty()) j["envelopes"] = EnvelopeFilesToJson(f.envelopes);
   j["cables"] = cables;
   json::Json pairs = json::Json::array();
   int violations = 0;

@@ -10,6 +10,7 @@
 
 #include "cablefit/app/relax_clearance.h"
 #include "cablefit/app/relax_file.h"
+#include "cablefit/app/relax_motion_pictures.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/report_html.h"
 #include "cablefit/core/base/errors.h"
@@ -413,7 +414,37 @@ std::string MotionReportSection(const std::vector<RelaxedFile>& files) {
       h << "<li>" << HtmlEscape(f.stem) << ": " << HtmlEscape(line) << "</li>";
   }
   if (!any) return "";
-  h << "</ul><p>Per pose figures in the JSON's per-cable <code>motion</code>.</p></section>\n";
+  h << "</ul><p>Per pose figures in the JSON's per-cable <code>motion</code>.</p>";
+  int figure = 0;
+  for (const RelaxedFile& f : files) {
+    const MotionPictures& pictures = f.motion_pictures;
+    if (pictures.animation.empty()) continue;
+    const std::string id = "motion" + std::to_string(figure++);  // also a JavaScript name
+    h << "<figure><a href=\"" << HtmlEscape(pictures.animation) << "\"><img src=\""
+      << HtmlEscape(pictures.animation) << "\" alt=\"" << HtmlEscape(f.stem)
+      << " motion\"></a><figcaption>" << HtmlEscape(f.stem)
+      << ": the motion, every pose (animated PNG); colour = distance from pose 0, grey line = "
+         "pose 0.</figcaption></figure>";
+    if (pictures.frames.empty()) continue;
+    // The still frames under a slider: pick a pose and look at it.
+    h << "<figure><img id=\"" << id << "\" src=\"" << HtmlEscape(pictures.frames[0])
+      << "\" alt=\"" << HtmlEscape(f.stem) << " pose\"><figcaption><input type=\"range\" min=\"0\" "
+      << "max=\"" << pictures.frames.size() - 1 << "\" value=\"0\" style=\"width:60%\" "
+      << "aria-label=\"pose\" oninput=\"var f=" << id << "_frames[this.value];document."
+      << "getElementById('" << id << "').src=f[0];document.getElementById('" << id
+      << "-caption').textContent=f[1];\"> <span id=\"" << id << "-caption\">"
+      << HtmlEscape(pictures.captions[0]) << "</span></figcaption></figure><script>var " << id
+      << "_frames=[";
+    for (size_t k = 0; k < pictures.frames.size(); ++k) {
+      // JSON strings are valid JavaScript literals; '<' escaped so no "</script>" can appear.
+      std::string pair = json::Json::array({pictures.frames[k], pictures.captions[k]}).dump();
+      std::string safe;
+      for (char c : pair) safe += c == '<' ? std::string("\\u003c") : std::string(1, c);
+      h << (k ? "," : "") << safe;
+    }
+    h << "];</script>";
+  }
+  h << "</section>\n";
   return h.str();
 }
 

@@ -19,14 +19,16 @@
 #include "cablefit/app/provenance.h"
 #include "cablefit/app/relax_summary.h"
 #include "cablefit/app/report_html.h"
+#include "render_lock.h"
 
 namespace cablefit::addin {
-namespace {
 
 std::mutex& RenderMutex() {
   static std::mutex mutex;
   return mutex;
 }
+
+namespace {
 
 SupportMarkerKind MarkerOf(SupportKind kind) {
   switch (kind) {

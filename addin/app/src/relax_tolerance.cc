@@ -36,6 +36,7 @@ void Solve(const CableRelaxation& nominal, const SimulationOptions& options, Tol
   c->excursion = d.maxCoeff(&k);
   c->s = a.s[k];
   c->point = b.points.col(k);
+  c->centreline = b;
 }
 
 }  // namespace
@@ -100,7 +101,10 @@ void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& opti
     ct.cable = static_cast<int>(i);
     ct.name = nominal.setup.name;
     for (const auto& c : corners) {
-      ToleranceCase tcase{c[0], c[1], c[2]};
+      ToleranceCase tcase;
+      tcase.length = c[0];
+      tcase.bending_stiffness = c[1];
+      tcase.linear_density = c[2];
       Solve(nominal, options, &tcase);
       ct.corners.push_back(tcase);
     }
@@ -114,7 +118,10 @@ void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& opti
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int k = 0; k < kInteriorChecks; ++k) {
       const double a = u(rng), b = u(rng), c = u(rng);
-      ToleranceCase tcase{a * tc.length, b * tc.bending_stiffness, c * tc.linear_density};
+      ToleranceCase tcase;
+      tcase.length = a * tc.length;
+      tcase.bending_stiffness = b * tc.bending_stiffness;
+      tcase.linear_density = c * tc.linear_density;
       Solve(nominal, options, &tcase);
       ct.interior.push_back(tcase);
       const double worst =

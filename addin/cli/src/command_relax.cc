@@ -27,6 +27,7 @@
 #include "cablefit/app/kbl_input.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
+#include "cablefit/app/relax_motion_pictures.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
 #include "cablefit/app/relax_summary.h"
@@ -164,6 +165,9 @@ int RunRelax(const RelaxArgs& a) {
   if (!a.summary_json.empty()) CheckSummaryJsonPath(a.summary_json, inputs);
   for (const std::string& stem : stems) {
     for (const char* suffix : {".step", ".json", "-deviation.png"}) output.CheckFile(out / (stem + suffix));
+    for (const std::string& name : EnvelopeFileNames(stem)) output.CheckFile(out / name);
+    output.CheckFile(out / (stem + "-motion.png"));
+    output.CheckFolder(out / MotionFramesFolder(stem));
   }
   const int n = static_cast<int>(paths.size());
   std::vector<RelaxedFile> files(static_cast<size_t>(n));
@@ -317,6 +321,8 @@ int RunRelax(const RelaxArgs& a) {
     try {
       bar.Update(2 * n + i, 0.1, f.stem + ": write JSON, STEP");
       auto t0 = Clock::now();
+      // The envelopes first: the JSON names them.
+      f.envelopes = WriteEnvelopeFiles(out.string(), f, ConfigOf(f, config));
       json::WriteJsonFile((out / (f.stem + ".json")).string(), RelaxedFileToJson(f, ConfigOf(f, config)));
       f.times.json = Since(t0);
       t0 = Clock::now();
@@ -336,6 +342,7 @@ int RunRelax(const RelaxArgs& a) {
         std::lock_guard lock(cad_mutex);
         WriteDeviationPicture((out / f.picture).string(), f, ConfigOf(f, config));
         if (a.close_ups) f.close_ups = WriteCloseUpPictures(out.string(), f, ConfigOf(f, config));
+        f.motion_pictures = WriteMotionAnimation(out.string(), f, ConfigOf(f, config));
         f.times.picture = Since(t0);
       }
       char buf[512];
@@ -406,7 +413,8 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
                   "folders of them")
       ->required();
   cmd->add_option("--out", args->out_dir,
-                  "output folder: <stem>.step, <stem>.json, <stem>-deviation.png, report.html")
+                  "output folder: <stem>.step, <stem>.json, <stem>-deviation.png, report.html (and "
+                  "<stem>-motion-envelope.stl/.glb ... with a motion or tolerances)")
       ->required();
   cmd->add_option("--config", args->config, "harness.json: materials, supports, gravity per cable");
   cmd->add_option("--jobs", args->jobs, "parallel workers (0 = one per core)")

@@ -88,16 +88,18 @@ bool RenderOptions::IsValid(std::string* why) const {
   return true;
 }
 
-ViewLayout PlanDeviationViews(const Scene& scene, const RenderOptions& options) {
-  Validate(scene, options);
+namespace {
+
+// The single-scene layout framed on `points` (one scene's, or every frame's of a sequence).
+ViewLayout PlanOnPoints(const std::vector<FramingPoint>& points, bool titled,
+                        const ColourScale& scale, const RenderOptions& options) {
   ViewLayout layout;
-  layout.colour_scale = ScaleFor(scene, options);
-  const int top = scene.title.empty() ? kMargin : kHeader;
+  layout.colour_scale = scale;
+  const int top = titled ? kHeader : kMargin;
   const int x0 = kMargin, x1 = options.width - kColourColumn, y1 = options.height - kMargin;
   const int iso_w = (x1 - x0 - kGap) / 2;
   const int right_x = x0 + iso_w + kGap;
   const int half_h = (y1 - top - kGap) / 2;
-  const std::vector<FramingPoint> points = render::FramingPoints(scene, options.show_scan_points);
   const std::vector<NamedView> views = render::ChooseViews(points);
   layout.panels.push_back({render::FrameView(views[0], points, x0, top, iso_w, y1 - top), 0});
   layout.panels.push_back({render::FrameView(views[1], points, right_x, top, x1 - right_x, half_h), 0});
@@ -105,6 +107,14 @@ ViewLayout PlanDeviationViews(const Scene& scene, const RenderOptions& options) 
       {render::FrameView(views[2], points, right_x, top + half_h + kGap, x1 - right_x, y1 - top - half_h - kGap), 0});
   PlaceColourBar(layout, options, top);
   return layout;
+}
+
+}  // namespace
+
+ViewLayout PlanDeviationViews(const Scene& scene, const RenderOptions& options) {
+  Validate(scene, options);
+  return PlanOnPoints(render::FramingPoints(scene, options.show_scan_points), !scene.title.empty(),
+                      ScaleFor(scene, options), options);
 }
 
 ViewLayout PlanSideBySide(const Scene& first, const Scene& second, const RenderOptions& options) {
@@ -136,6 +146,27 @@ Image RenderDeviationViews(const Scene& scene, const RenderOptions& options) {
   std::vector<std::pair<int, std::string>> titles;
   if (!scene.title.empty()) titles.emplace_back(kHeader - 16, scene.title);
   return Compose({&scene}, layout, options, titles);
+}
+
+std::vector<Image> RenderDeviationSequence(const std::vector<Scene>& frames,
+                                           const RenderOptions& options) {
+  std::vector<Image> images;
+  if (frames.empty()) return images;
+  std::vector<FramingPoint> points;
+  bool titled = false;
+  for (const Scene& frame : frames) {
+    Validate(frame, options);
+    const std::vector<FramingPoint> more = render::FramingPoints(frame, options.show_scan_points);
+    points.insert(points.end(), more.begin(), more.end());
+    titled = titled || !frame.title.empty();
+  }
+  const ViewLayout layout = PlanOnPoints(points, titled, ScaleFor(frames.front(), options), options);
+  for (const Scene& frame : frames) {
+    std::vector<std::pair<int, std::string>> titles;
+    if (!frame.title.empty()) titles.emplace_back(kHeader - 16, frame.title);
+    images.push_back(Compose({&frame}, layout, options, titles));
+  }
+  return images;
 }
 
 Image RenderSideBySide(const Scene& first, const Scene& second, const RenderOptions& options) {

@@ -12,7 +12,9 @@
 #include "cablefit/formats/json_util.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_clearance.h"
+#include "cablefit/app/relax_envelope.h"
 #include "cablefit/app/relax_motion.h"
+#include "cablefit/app/relax_motion_pictures.h"
 #include "cablefit/app/relax_tolerance.h"
 
 namespace cablefit::addin {
@@ -53,6 +55,7 @@ struct RelaxedFile {
   StageTimes times;
   std::string picture;                 ///< PNG file name next to the outputs, empty if none
   std::vector<std::string> close_ups;  ///< per cable PNG names (--close-ups), else empty
+  MotionPictures motion_pictures;      ///< the motion's animation and still frames, if any
   std::vector<json::Json> networks;    ///< per network group: junction loads, contacts
   /// The settings this input is relaxed with when the input itself carries some (a KBL file:
   /// the run's harness.json layered over them); null = the run's. See ConfigOf.
@@ -66,6 +69,8 @@ struct RelaxedFile {
   std::optional<FileMotion> motion;
   /// The harness.json tolerance envelope run on this input (RunFileTolerance); unset without one.
   std::optional<FileTolerance> tolerance;
+  /// Envelope files written next to the outputs (WriteEnvelopeFiles), empty when none.
+  std::vector<EnvelopeFiles> envelopes;
 };
 
 /// Fills f->clearances from the relaxed cables (failed ones are left out) and the drawing's

@@ -22,6 +22,7 @@ struct ToleranceCase {
   double excursion = 0.0;     ///< [m] largest distance to the nominal shape at the same s / L
   double s = 0.0;             ///< [m] nominal arc length where it is largest
   Vec3 point = Vec3::Zero();  ///< [m] the varied cable's point there
+  Polyline centreline;        ///< the varied relaxed shape (s [m], 3 x n [m]); empty if not converged
 };
 
 struct CableTolerance {

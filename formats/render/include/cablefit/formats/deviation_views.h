@@ -60,6 +60,11 @@ ViewLayout PlanSideBySide(const Scene& first, const Scene& second, const RenderO
 
 /// Isometric + two orthographic views of `scene`, colour bar and annotations.
 Image RenderDeviationViews(const Scene& scene, const RenderOptions& options);
+/// The frames of an animation as RenderDeviationViews draws them, on one layout: the views are
+/// chosen and framed on every frame's points together, so the camera stands still from frame to
+/// frame, and the colour scale is the options', else the first frame's.
+std::vector<Image> RenderDeviationSequence(const std::vector<Scene>& frames,
+                                           const RenderOptions& options);
 /// `first` (e.g. baseline) above `second` (e.g. fitted), on one colour scale.
 Image RenderSideBySide(const Scene& first, const Scene& second, const RenderOptions& options);
 

@@ -1,0 +1,109 @@
+#include "cablefit/app/relax_envelope.h"
+
+#include <filesystem>
+
+#include "cablefit/app/provenance.h"
+#include "cablefit/app/relax_file.h"
+#include "cablefit/app/swept_envelope.h"
+#include "cablefit/formats/gltf_file.h"
+#include "cablefit/formats/stl_file.h"
+
+namespace cablefit::addin {
+namespace {
+
+struct Shapes {
+  int cable = 0;
+  std::vector<Polyline> shapes;
+};
+
+EnvelopeFiles Write(const std::string& dir, const RelaxedFile& f, const HarnessConfig& config,
+                    const std::string& kind, const std::vector<Shapes>& cables) {
+  EnvelopeFiles out;
+  out.kind = kind;
+  out.stl = f.stem + "-" + kind + "-envelope.stl";
+  out.glb = f.stem + "-" + kind + "-envelope.glb";
+  TriangleMesh all;
+  std::vector<GltfMesh> meshes;
+  for (const Shapes& c : cables) {
+    const double radius = 0.5 * OutputDiameter(f, c.cable, config);
+    EnvelopeFiles::Cable row;
+    row.name = f.drawing.cables[static_cast<size_t>(c.cable)].name;
+    row.shapes = static_cast<int>(c.shapes.size());
+    TriangleMesh mesh = SweptEnvelope(c.shapes, radius, EnvelopeOptions{}, &row.shapes_used);
+    row.triangles = static_cast<long>(mesh.faces.cols());
+    AppendMesh(mesh, &all);
+    meshes.push_back({row.name, std::move(mesh)});
+    out.cables.push_back(row);
+  }
+  const std::filesystem::path folder(dir);
+  // Binary STL headers must not start with "solid".
+  WriteStl((folder / out.stl).string(), all, "cablefit " + kind + " envelope of " + f.stem);
+  WriteGlb((folder / out.glb).string(), meshes, ToolVersion());
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> EnvelopeFileNames(const std::string& stem) {
+  std::vector<std::string> names;
+  for (const char* kind : {"motion", "tolerance"})
+    for (const char* ext : {".stl", ".glb"})
+      names.push_back(stem + "-" + kind + "-envelope" + ext);
+  return names;
+}
+
+std::vector<EnvelopeFiles> WriteEnvelopeFiles(const std::string& dir, const RelaxedFile& f,
+                                              const HarnessConfig& config) {
+  std::vector<EnvelopeFiles> written;
+  if (f.motion && !f.motion->cables.empty()) {
+    std::vector<Shapes> cables;
+    for (const CableMotion& m : f.motion->cables) {
+      Shapes s{m.cable, {}};
+      for (const MotionPose& p : m.poses)
+        if (p.converged) s.shapes.push_back(p.centreline);
+      if (!s.shapes.empty()) cables.push_back(std::move(s));
+    }
+    if (!cables.empty()) written.push_back(Write(dir, f, config, "motion", cables));
+  }
+  if (f.tolerance && !f.tolerance->cables.empty()) {
+    std::vector<Shapes> cables;
+    for (const CableTolerance& t : f.tolerance->cables) {
+      const auto& nominal = f.cables[static_cast<size_t>(t.cable)];
+      if (!nominal) continue;
+      Shapes s{t.cable, {nominal->relaxed}};
+      for (const auto* list : {&t.corners, &t.interior})
+        for (const ToleranceCase& c : *list)
+          if (c.converged && c.centreline.size() > 1) s.shapes.push_back(c.centreline);
+      cables.push_back(std::move(s));
+    }
+    if (!cables.empty()) written.push_back(Write(dir, f, config, "tolerance", cables));
+  }
+  return written;
+}
+
+json::Json EnvelopeFilesToJson(const std::vector<EnvelopeFiles>& files) {
+  json::Json out = json::Json::array();
+  for (const EnvelopeFiles& e : files) {
+    json::Json cables = json::Json::array();
+    for (const EnvelopeFiles::Cable& c : e.cables)
+      cables.push_back({{"name", c.name},
+                        {"shapes", c.shapes},
+                        {"shapes_used", c.shapes_used},
+                        {"triangles", c.triangles}});
+    out.push_back(
+        {{"kind", e.kind},
+         {"stl", e.stl},
+         {"glb", e.glb},
+         {"cables", cables},
+         {"construction",
+          e.kind == "motion"
+              ? "union of the closed tube surfaces of every converged pose (a pose repeating an "
+                "earlier one within 1e-6 m left out), overlapping shells in one mesh; nothing "
+                "between poses"
+              : "union of the closed tube surfaces of the nominal shape and every converged "
+                "corner and interior check, overlapping shells in one mesh"}});
+  }
+  return out;
+}
+
+}  // namespace cablefit::addin
