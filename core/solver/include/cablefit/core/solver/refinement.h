@@ -34,10 +34,16 @@ struct RefinedSolution {
   double estimated_error = 0.0;
   bool accuracy_met = false;               // converged and estimated_error <= accuracy
   int newton_iterations = 0;               // over all levels
+  /// Stopped before max_levels because the levels left could not meet the accuracy at the rate
+  /// the estimate was falling (at best 16x per level, fourth order): accuracy_met is false.
+  bool stopped_early = false;
 };
 
 /// Calls solve_level(0), solve_level(1), ... until a level fails, or `plan.min_levels` are solved
-/// and the estimate meets `plan.accuracy`, or `plan.max_levels` are solved.
+/// and the estimate meets `plan.accuracy`, or `plan.max_levels` are solved, or (after
+/// `plan.min_levels`) the levels left could not bring the estimate down to `plan.accuracy` even
+/// at the rate it last fell by (16x per level, fourth order, until two estimates from
+/// extrapolations can be compared, from the fourth level on; never faster than that).
 RefinedSolution SolveRefined(const RefinementPlan& plan,
                              const std::function<LevelSolution(int level)>& solve_level);
 
