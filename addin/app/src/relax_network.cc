@@ -164,6 +164,7 @@ NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptio
   out.plan.accuracy = options.accuracy;
   out.plan.min_levels = 2;
   out.plan.max_levels = 2;
+  out.plan.stop_when_out_of_reach = true;
   const double first_level_elements = total / out.options.element_length;
   while (out.plan.max_levels < kMaxNetworkLevels &&
          first_level_elements * (1 << out.plan.max_levels) <= kMaxNetworkElements)

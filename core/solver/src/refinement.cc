@@ -39,7 +39,8 @@ RefinedSolution SolveRefined(const RefinementPlan& plan,
     const double rate = level >= 3 && std::isfinite(previous) && estimate > 0
                             ? std::clamp(previous / estimate, 1.0, kBestRatePerLevel)
                             : kBestRatePerLevel;
-    if (level + 1 >= plan.min_levels && left > 0 && estimate > plan.accuracy * std::pow(rate, left)) {
+    if (plan.stop_when_out_of_reach && level + 1 >= plan.min_levels && left > 0 &&
+        estimate > plan.accuracy * std::pow(rate, left)) {
       out.stopped_early = true;
       break;
     }

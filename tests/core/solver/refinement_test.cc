@@ -36,6 +36,7 @@ TEST(SolveRefined, StopsWhenTheLevelsLeftCannotMeetTheAccuracyAtTheRateTheEstima
   RefinementPlan plan;
   plan.min_levels = 2;
   plan.max_levels = 7;
+  plan.stop_when_out_of_reach = true;
   plan.accuracy = 1e-8;  // the estimate halves per level: 7 levels end near 1e-6 m
   int solved = 0;
   const RefinedSolution out = SolveRefined(plan, [&](int level) {
@@ -55,6 +56,7 @@ TEST(SolveRefined, GoesOnWhileTheLevelsLeftCanStillMeetTheAccuracy) {
   RefinementPlan plan;
   plan.min_levels = 2;
   plan.max_levels = 7;
+  plan.stop_when_out_of_reach = true;
   plan.accuracy = 1e-6;  // met at the seventh level, at 2x per level
   const RefinedSolution out = SolveRefined(plan, FirstOrderLevel);
   EXPECT_FALSE(out.stopped_early);
@@ -64,10 +66,21 @@ TEST(SolveRefined, GoesOnWhileTheLevelsLeftCanStillMeetTheAccuracy) {
   EXPECT_GT(out.estimated_error, 0.25 * plan.accuracy);  // the estimate did fall at first order
 }
 
+TEST(SolveRefined, WithoutTheFlagEveryLevelIsSolved) {
+  RefinementPlan plan;
+  plan.min_levels = 2;
+  plan.max_levels = 7;
+  plan.accuracy = 1e-8;
+  const RefinedSolution out = SolveRefined(plan, FirstOrderLevel);
+  EXPECT_FALSE(out.stopped_early);
+  EXPECT_EQ(out.levels.levels(), 7);
+}
+
 TEST(SolveRefined, AMetAccuracyStopsAtTheMinimumLevels) {
   RefinementPlan plan;
   plan.min_levels = 2;
   plan.max_levels = 7;
+  plan.stop_when_out_of_reach = true;
   plan.accuracy = 1e-3;
   const RefinedSolution out = SolveRefined(plan, FirstOrderLevel);
   EXPECT_TRUE(out.accuracy_met);
