@@ -19,18 +19,14 @@ namespace {
 // The network solved again without gravity, on one level (the split explains a deviation, it
 // needs no extrapolated accuracy); a failure only leaves the split unknown.
 void SplitSpringbackAndSag(const NetworkSpec& spec, const NetworkOptions& opt,
-                           GroupRelaxation* out) {
+                           const NetworkSolution& loaded, GroupRelaxation* out) {
   const auto unknown = [&](const std::string& why) {
     for (CableRelaxation& r : out->cables) r.split_note = "not computed: " + why;
   };
   for (const CableRelaxation& r : out->cables)
     if (!r.result.converged) return unknown("the network did not converge");
-  NetworkSpec weightless = spec;
-  weightless.gravity = Vec3::Zero();
-  RefinementPlan plan;
-  plan.min_levels = plan.max_levels = 1;
   try {
-    const NetworkSimulation sim = SimulateNetwork(weightless, plan, opt);
+    const NetworkSimulation sim = SimulateWithoutGravity(spec, opt, loaded.branches, loaded.element_normals);
     if (!sim.converged) return unknown("the solve without gravity did not converge");
     for (size_t b = 0; b < out->cables.size(); ++b)
       MeasureSpringbackAndSag(sim.centerlines[b], &out->cables[b]);
@@ -171,11 +167,26 @@ NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptio
   out.plan.accuracy = options.accuracy;
   out.plan.min_levels = 2;
   out.plan.max_levels = 2;
+  out.plan.stop_when_out_of_reach = true;
   const double first_level_elements = total / out.options.element_length;
   while (out.plan.max_levels < kMaxNetworkLevels &&
          first_level_elements * (1 << out.plan.max_levels) <= kMaxNetworkElements)
     ++out.plan.max_levels;
   return out;
+}
+
+NetworkSimulation SimulateWithoutGravity(const NetworkSpec& spec, const NetworkOptions& options,
+                                         const std::vector<Polyline>& loaded,
+                                         const std::vector<Eigen::Matrix3Xd>& loaded_normals) {
+  NetworkSpec weightless = spec;
+  weightless.gravity = Vec3::Zero();
+  RefinementPlan plan;
+  plan.min_levels = plan.max_levels = 1;
+  NetworkOptions opt = options;
+  opt.refinement = 0;
+  opt.initial_routes = loaded;
+  opt.initial_normals = loaded_normals;
+  return SimulateNetwork(weightless, plan, opt);
 }
 
 GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,
@@ -247,7 +258,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
     MeasureRelaxation(config.min_bend_radius_factor, &r);
     out.cables.push_back(std::move(r));
   }
-  SplitSpringbackAndSag(spec, opt, &out);
+  SplitSpringbackAndSag(spec, opt, fine, &out);
   // Contact is held at nodes: over a sharp edge the stretch between two nodes can cut the
   // corner. Said on every cable in contact rather than hidden in max_penetration.
   if (fine.max_penetration > 0.01 * min_d) {

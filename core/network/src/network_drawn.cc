@@ -1,6 +1,7 @@
 // The drawn shape of a network as frames: what the breakout angles are measured from and what
 // the solver starts from.
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "cablefit/core/rod/initial_shape.h"
@@ -65,7 +66,8 @@ std::vector<double> ClampTwist(const BranchSpec& br, const std::vector<double>& 
 }  // namespace
 
 std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
-                                         const std::vector<Polyline>* routes) {
+                                         const std::vector<Polyline>* routes,
+                                         const std::vector<Eigen::Matrix3Xd>* normals) {
   const RodModel& m = net.rod;
   std::vector<Eigen::Vector4d> q(m.items.size(), Eigen::Vector4d(1, 0, 0, 0));
   for (size_t b = 0; b < net.branches.size(); ++b) {
@@ -81,7 +83,33 @@ std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
       d1[k] = k == 0 ? Vec3(t[k].unitOrthogonal()) : Transport(d1[k - 1], t[k - 1], t[k]);
       mid_s[k] = 0.5 * (lay.node_s[k] + lay.node_s[k + 1]);
     }
-    const std::vector<double> twist = ClampTwist(br, mid_s, t, d1);
+    std::vector<double> twist = ClampTwist(br, mid_s, t, d1);
+    const Eigen::Matrix3Xd* given = nullptr;  // 3 x (start's elements)
+    if (routes && normals && normals->size() == net.branches.size() &&
+        (*normals)[b].cols() == (*routes)[b].size() - 1 && (*normals)[b].cols() > 0)
+      given = &(*normals)[b];
+    if (given) {
+      // The start's normals, linear in s between its element midpoints, turned onto each
+      // element's tangent: the twist angle from the transported d1 (unwrapped along the branch).
+      const Polyline& from = (*routes)[b];
+      const double scale = br.length / std::max(1e-300, from.s[from.size() - 1] - from.s[0]);
+      const int nf = static_cast<int>(given->cols());
+      int j = 0;
+      for (size_t k = 0; k < ne; ++k) {
+        auto mid = [&](int i) { return 0.5 * (from.s[i] + from.s[i + 1] - 2 * from.s[0]) * scale; };
+        while (j + 1 < nf && mid(j + 1) < mid_s[k]) ++j;
+        Vec3 n = given->col(j);
+        if (j + 1 < nf && mid_s[k] > mid(j)) {
+          const double w = std::clamp((mid_s[k] - mid(j)) / std::max(1e-300, mid(j + 1) - mid(j)), 0.0, 1.0);
+          n = (1 - w) * given->col(j) + w * given->col(j + 1);
+        }
+        n -= n.dot(t[k]) * t[k];
+        if (n.norm() < 1e-6) continue;  // keep the drawn twist here
+        double angle = AngleAbout(t[k], d1[k], n.normalized());
+        if (k > 0) angle = twist[k - 1] + std::remainder(angle - twist[k - 1], 2 * M_PI);
+        twist[k] = angle;
+      }
+    }
     for (size_t k = 0; k < ne; ++k) {
       const Vec3 n = Eigen::AngleAxisd(twist[k], t[k]) * d1[k];
       Eigen::Matrix3d r;

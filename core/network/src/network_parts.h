@@ -18,8 +18,11 @@ RodSpec BranchRodSpec(const NetworkSpec& spec, int branch);
 /// tangents along the route's chords, twist-free (parallel transport) along each branch; a
 /// support frame takes its neighbouring element's frame, a junction its first branch's end frame.
 /// `routes` (one per branch, as long as the branch) replace the drawn routes when given: the
-/// start of a finer level from the coarser level's equilibrium.
+/// start of a finer level from the coarser level's equilibrium; `normals` (with routes: per
+/// branch, 3 x that route's elements, each element's material normal) then replace the drawn
+/// twist, interpolated to this model's element midpoints.
 std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
-                                         const std::vector<Polyline>* routes = nullptr);
+                                         const std::vector<Polyline>* routes = nullptr,
+                                         const std::vector<Eigen::Matrix3Xd>* normals = nullptr);
 
 }  // namespace cablefit

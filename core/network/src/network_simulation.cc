@@ -280,6 +280,10 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
     pl.points.resize(3, static_cast<int>(lay.nodes.size()));
     for (size_t k = 0; k < lay.nodes.size(); ++k) pl.points.col(k) = r.col(lay.nodes[k]);
     sol->branches.push_back(pl);
+    Eigen::Matrix3Xd normals(3, static_cast<int>(lay.elements.size()));
+    for (size_t k = 0; k < lay.elements.size(); ++k)
+      normals.col(k) = internal::quat::ToMatrix(st.q[m.element_item[lay.elements[k]]]).col(0);
+    sol->element_normals.push_back(std::move(normals));
   }
   // External node forces; the anchor takes what balances the rest.
   std::vector<Vec3> ext(nn);
@@ -392,10 +396,11 @@ std::vector<char> EnteredInDrawing(const NetworkModel& net, const NodeInfo& info
 
 }  // namespace
 
-RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes) {
+RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes,
+                           const std::vector<Eigen::Matrix3Xd>* normals) {
   const RodModel& m = net.rod;
   RodState st;
-  st.q = DrawnFrames(net, routes);
+  st.q = DrawnFrames(net, routes, normals);
   internal::AlignQuaternionSigns(m, &st);
   const int ns = static_cast<int>(m.supports.size());
   st.support_position.assign(ns, Vec3::Zero());
@@ -443,7 +448,8 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   const std::vector<char> attached = EnteredInDrawing(base, info, spec.obstacles);
   const ObstacleField field(spec.obstacles, attached);
   const bool warm = options.initial_routes.size() == spec.branches.size();
-  RodState st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr);
+  RodState st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr,
+                                  warm ? &options.initial_normals : nullptr);
   std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;

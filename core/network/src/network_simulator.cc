@@ -17,10 +17,14 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
     // a cold solve from the drawing (on a 27-branch harness 35-51 iterations per level).
     // Contact can defeat that start (nodes between the coarse ones cut into an edge the coarse
     // level rested on): then the level is solved cold, as it was before.
-    if (level > 0 && out.finest.converged()) at.initial_routes = out.finest.branches;
+    if (level > 0 && out.finest.converged()) {
+      at.initial_routes = out.finest.branches;
+      at.initial_normals = out.finest.element_normals;
+    }
     out.finest = SolveNetwork(spec, at);
     if (!out.finest.converged() && !at.initial_routes.empty()) {
       at.initial_routes.clear();
+      at.initial_normals.clear();
       out.finest = SolveNetwork(spec, at);
     }
     out.level_elements.push_back(out.finest.num_elements);

@@ -525,7 +525,7 @@ void EvaluateStability(const RodModel& model, const RodState& state, StaticsSumm
 }
 
 StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
-                                const StaticsOptions& options);
+                                const StaticsOptions& options, bool try_direct = true);
 StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
                                      const StaticsOptions& options);
 
@@ -579,10 +579,12 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
   if (!sum.converged() && !options.ramp_loads) {
     // A start far from any loaded equilibrium (e.g. a default shape under a heavy, anisotropic
     // load): relax it weightless first and bring the loads in by continuation.
+    // Its direct solve is the one that just failed (same start, targets and full loads; the
+    // solve is deterministic), so only the continuation is run.
     RodState retry = start;
     StaticsOptions ramped = options;
     ramped.ramp_loads = true;
-    StaticsSummary second = SolveStaticsFrom(model, &retry, ramped);
+    StaticsSummary second = SolveStaticsFrom(model, &retry, ramped, /*try_direct=*/false);
     second.iterations += sum.iterations;
     if (second.converged()) {
       *state = retry;
@@ -612,19 +614,23 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
 }
 
 StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
-                                const StaticsOptions& options) {
+                                const StaticsOptions& options, bool try_direct) {
   const auto t0 = Clock::now();
   const RodState start = *state;
-  RodState direct = start;
-  internal::SetSupportTargets(model, 1.0, start, &direct);
-  direct.load_factor = 1.0;
-  direct.natural_factor = 1.0;
-  StaticsSummary sum = SolveStaticsDirect(model, &direct, options);
-  int total_iterations = sum.iterations;
-  if (sum.converged()) {
-    *state = direct;
-    sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    return sum;
+  StaticsSummary sum;
+  int total_iterations = 0;
+  if (try_direct) {
+    RodState direct = start;
+    internal::SetSupportTargets(model, 1.0, start, &direct);
+    direct.load_factor = 1.0;
+    direct.natural_factor = 1.0;
+    sum = SolveStaticsDirect(model, &direct, options);
+    total_iterations = sum.iterations;
+    if (sum.converged()) {
+      *state = direct;
+      sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      return sum;
+    }
   }
   // Continuation from the start state's own poses (and, if asked, from zero load).
   RodState cur = start;

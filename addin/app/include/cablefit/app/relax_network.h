@@ -52,6 +52,16 @@ struct NetworkRelaxPlan {
 };
 NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptions& options);
 
+/// The network without gravity on one level (`options` at refinement 0), for the springback/sag
+/// split: it needs no extrapolated accuracy. Started from `loaded`, the node centrelines of the
+/// solution under gravity (one per branch), so Newton only takes the gravity off instead of
+/// solving again from the drawing (`loaded_normals`, its NetworkSolution::element_normals, keep
+/// its twist); solved from the drawing when that start fails
+/// (SimulateNetwork's fallback). Without `loaded` (empty) it starts from the drawing.
+NetworkSimulation SimulateWithoutGravity(const NetworkSpec& spec, const NetworkOptions& options,
+                                         const std::vector<Polyline>& loaded,
+                                         const std::vector<Eigen::Matrix3Xd>& loaded_normals = {});
+
 /// Solves a network group from the drawn routes (two resolutions, Richardson-extrapolated).
 /// Throws InvalidInput for an invalid set-up; a solver failure is reported per cable.
 GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,

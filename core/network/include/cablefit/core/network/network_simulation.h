@@ -31,6 +31,12 @@ struct NetworkOptions {
   /// level's equilibrium), whose tangents set the first frames. The model (junction angles,
   /// support targets) always comes from the drawing.
   std::vector<Polyline> initial_routes;
+  /// With initial_routes: per branch, 3 x elements of that start, the material normal d1 of each
+  /// of its elements (NetworkSolution::element_normals), so the start keeps the equilibrium's
+  /// twist too; empty = twist as drawn. Positions alone lose it: the drawn twist put back on a
+  /// coarser level's shape cost the next level 10-12 Newton iterations (movo sample, 5 x the
+  /// energy of the equilibrium at the start), its own twist 3-5.
+  std::vector<Eigen::Matrix3Xd> initial_normals;
 
   bool IsValid(std::string* why) const;
 };
@@ -56,6 +62,8 @@ struct ContactLoad {
 struct NetworkSolution {
   StaticsSummary summary;
   std::vector<Polyline> branches;          // per branch: node s [m] and positions [m]
+  /// Per branch: 3 x elements, each element's material normal d1 (unit; warm starts).
+  std::vector<Eigen::Matrix3Xd> element_normals;
   /// Per branch: 3 x elements [N], the force of the part at larger s on the part at smaller s
   /// (as RodSolution::internal_force; its component along the branch is the tension).
   std::vector<Eigen::Matrix3Xd> internal_force;
@@ -80,6 +88,7 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
 
 /// The drawn shape of a compiled network as a solver state (supports start at the poses the
 /// drawing gives them; the solver moves them to their targets).
-RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes = nullptr);
+RodState DrawnNetworkState(const NetworkModel& net, const std::vector<Polyline>* routes = nullptr,
+                           const std::vector<Eigen::Matrix3Xd>* normals = nullptr);
 
 }  // namespace cablefit
