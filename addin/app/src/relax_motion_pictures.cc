@@ -19,18 +19,6 @@ namespace {
 constexpr double kColourScaleFloorMm = 1.0;  // as the deviation pictures: below 1 mm stays dark
 constexpr int kFrameDelayMs = 200;
 
-SupportMarkerKind MarkerOf(SupportKind kind) {
-  switch (kind) {
-    case SupportKind::kClamp:
-      return SupportMarkerKind::kClamp;
-    case SupportKind::kClip:
-      return SupportMarkerKind::kClip;
-    case SupportKind::kPin:
-      return SupportMarkerKind::kPin;
-  }
-  return SupportMarkerKind::kPin;
-}
-
 // Distance of each sample of `shape` to `start` at the same arc length [m] (n).
 Eigen::VectorXd MovedFrom(const Polyline& start, const Polyline& shape) {
   const Polyline at = SampleCenterline(start, shape.s);

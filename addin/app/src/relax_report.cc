@@ -30,18 +30,6 @@ std::mutex& RenderMutex() {
 
 namespace {
 
-SupportMarkerKind MarkerOf(SupportKind kind) {
-  switch (kind) {
-    case SupportKind::kClamp:
-      return SupportMarkerKind::kClamp;
-    case SupportKind::kClip:
-      return SupportMarkerKind::kClip;
-    case SupportKind::kPin:
-      return SupportMarkerKind::kPin;
-  }
-  return SupportMarkerKind::kPin;
-}
-
 // The smallest top of the deviation colour scale [mm]: below a millimetre a drawing and a
 // relaxed cable agree for a harness engineer, so such cables stay dark.
 constexpr double kColourScaleFloorMm = 1.0;

@@ -36,6 +36,18 @@ ColourScale ScaleFromRange(double lo, double hi) {
 
 }  // namespace
 
+SupportMarkerKind MarkerOf(SupportKind kind) {
+  switch (kind) {
+    case SupportKind::kClamp:
+      return SupportMarkerKind::kClamp;
+    case SupportKind::kClip:
+      return SupportMarkerKind::kClip;
+    case SupportKind::kPin:
+      return SupportMarkerKind::kPin;
+  }
+  return SupportMarkerKind::kPin;
+}
+
 std::string ToString(SupportMarkerKind kind) {
   switch (kind) {
     case SupportMarkerKind::kClamp: return "clamp";

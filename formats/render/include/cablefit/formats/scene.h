@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cablefit/core/base/geometry_types.h"
+#include "cablefit/core/rod/rod_spec.h"
 #include "cablefit/formats/colour_map.h"
 #include "cablefit/formats/image.h"
 
@@ -31,6 +32,8 @@ struct SceneGhost {
 
 enum class SupportMarkerKind { kClamp, kClip, kPin };
 std::string ToString(SupportMarkerKind kind);
+/// How a support of the rod is drawn.
+SupportMarkerKind MarkerOf(SupportKind kind);
 
 /// A support, drawn as a marker (square = clamp, ring = clip, triangle = pin) with its label.
 struct SceneSupport {
