@@ -3,6 +3,8 @@
 # FUZZ_SECONDS (default 30) on a scratch copy of its seed corpus. A crash, sanitizer report,
 # leak, hang (> 10 s for one input) or > 2 GB of memory fails the run; the input that did it is
 # kept in build-fuzz/artifacts/ (add it to tests/fuzz/regressions/<target>/ once fixed).
+# FUZZ_SEED fixes the random choices of every target (CI sets it, so that a red run can be
+# reproduced); unset, the clock picks them, to explore.
 # Usage: tools/fuzz.sh [TARGET...]   (targets: ply centerline_csv ... see tests/fuzz; with no
 # target also the CAD/mesh readers through the release build, tools/fuzz_cad.py)
 set -euo pipefail
@@ -40,7 +42,8 @@ for t in "${targets[@]}"; do
   set +e
   "$BUILD_DIR/tests/fuzz/fuzz_$t" "$work" "tests/fuzz/corpus/$t" "${regressions[@]}" \
     -max_total_time="$SECONDS_PER_TARGET" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-    -dict="$dict" -print_final_stats=1 -artifact_prefix="$artifacts/$t-" > "$log" 2>&1
+    -dict="$dict" -print_final_stats=1 -artifact_prefix="$artifacts/$t-" \
+    ${FUZZ_SEED:+-seed="$FUZZ_SEED"} > "$log" 2>&1
   rc=$?
   set -e
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
@@ -55,7 +58,7 @@ done
 cablefit_bin=${RELEASE_BUILD_DIR:-build}/addin/cablefit
 if [ $# -eq 0 ] && [ -x "$cablefit_bin" ]; then
   if python3 tools/fuzz_cad.py "$cablefit_bin" "$SECONDS_PER_TARGET" "$artifacts" \
-      > "$BUILD_DIR/fuzz-cad.log" 2>&1; then
+      ${FUZZ_SEED:+"$FUZZ_SEED"} > "$BUILD_DIR/fuzz-cad.log" 2>&1; then
     printf '%-18s %s\n' cad "$(tail -1 "$BUILD_DIR/fuzz-cad.log")"
   else
     printf '%-18s FAILED (see %s)\n' cad "$BUILD_DIR/fuzz-cad.log"

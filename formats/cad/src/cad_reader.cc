@@ -493,7 +493,7 @@ HarnessDrawing ReadCadFile(const std::string& path, const CadReadOptions& option
                       ExactText(options.mesh_relative_deflection),
                       ExactText(options.min_tube_area_fraction),
                       ExactText(options.min_tube_aspect), ExactText(options.junction_tolerance)},
-                     options.probe_seconds);
+                     options.ProbeSecondsFor(std::filesystem::file_size(path, ec)));
   }
   return internal::ReadCadFileInThisProcess(path, options);
 }

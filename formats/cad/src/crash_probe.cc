@@ -12,7 +12,9 @@ void ProbeFileInChild(const std::string& path, const std::string& what,
   if (!outcome) return;  // the real read decides
   if (outcome->timed_out) {
     throw FileError(path, what + " did not finish within " +
-                              std::to_string(static_cast<int>(max_seconds)) + " s");
+                              std::to_string(static_cast<int>(max_seconds)) +
+                              " s (the limit for a file of this size); the file is corrupt or "
+                              "sends OpenCASCADE's shape healing into a loop");
   }
   if (outcome->signal != 0) {
     throw FileError(path, what + " crashed on this file (signal " +

@@ -112,7 +112,13 @@ bool CadReadOptions::IsValid(std::string* why) const {
   if (!(junction_tolerance >= 0)) return fail("junction_tolerance must be >= 0");
   if (!(probe_seconds >= 0 && std::isfinite(probe_seconds)))
     return fail("probe_seconds must be finite and >= 0");
+  if (!(probe_seconds_per_megabyte >= 0 && std::isfinite(probe_seconds_per_megabyte)))
+    return fail("probe_seconds_per_megabyte must be finite and >= 0");
   return true;
+}
+
+double CadReadOptions::ProbeSecondsFor(std::uintmax_t bytes) const {
+  return probe_seconds + probe_seconds_per_megabyte * static_cast<double>(bytes) * 1e-6;
 }
 
 }  // namespace cablefit

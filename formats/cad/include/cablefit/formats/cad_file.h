@@ -1,6 +1,7 @@
 // Reading harness CAD (STEP AP203/214/242, IGES) and writing relaxed cables back as STEP AP242.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,18 @@ struct CadReadOptions {
   /// Cable ends closer than this [m] are recorded as one junction.
   double junction_tolerance = 1e-4;
   /// [s] Longest the crash probe of a STEP/IGES read (a helper process reading the file first,
-  /// since OCCT segfaults on some corrupt files) may take before the file is reported as failed;
-  /// 0 reads in this process only, without the probe.
-  double probe_seconds = 600.0;
+  /// since OCCT segfaults on some corrupt files) may take before the file is reported as failed:
+  /// `probe_seconds` plus `probe_seconds_per_megabyte` for each MB (10^6 bytes) of the file;
+  /// probe_seconds = 0 reads in this process only, without the probe. Healthy files read at about
+  /// 1 MB/s here (third-party assemblies included), so the default leaves a margin of 30x and
+  /// more; a hostile file can keep OCCT's shape healing busy for many minutes (a mutated IGES of
+  /// 97 kB ran for over 10 minutes), and this limit is what ends it.
+  double probe_seconds = 30.0;
+  double probe_seconds_per_megabyte = 30.0;
 
   bool IsValid(std::string* why) const;
+  /// The probe's limit [s] for a file of `bytes`.
+  double ProbeSecondsFor(std::uintmax_t bytes) const;
 };
 
 /// Reads a STEP (.step/.stp) or IGES (.iges/.igs) file with its assembly structure, names and
