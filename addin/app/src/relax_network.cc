@@ -163,6 +163,10 @@ NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptio
   for (const BranchSpec& b : spec.branches) total += b.length;
   NetworkRelaxPlan out;
   out.options.statics = options.statics;
+  // When the direct solve from the drawing fails, bring gravity in by continuation at once: the
+  // supports already sit where the drawing has them, so continuing in their poses alone would
+  // only repeat the failed solve (60 Newton iterations of a 183-segment harness).
+  out.options.statics.ramp_loads = true;
   out.options.element_length = std::clamp(total / 1500, 0.002, 0.01);
   out.plan.accuracy = options.accuracy;
   out.plan.min_levels = 2;

@@ -184,6 +184,7 @@ void ApplyStep(const RodModel& model, const Eigen::VectorXd& step, double alpha,
 
 struct KktSolve {
   bool ok = false;
+  bool factored = false;        // by the KktLdlt, which can then solve other right-hand sides
   int negative_directions = 0;  // of the reduced Hessian (unstable directions on the manifold)
   Eigen::VectorXd step;         // 3n
   Eigen::VectorXd lambda;       // m
@@ -266,6 +267,7 @@ KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const internal::BlockTree
   kkt->Solve(ev.gradient, ev.c, &out.step, &out.lambda);
   out.negative_directions = kkt->NegativeCount() - static_cast<int>(ev.c.size());
   out.ok = true;
+  out.factored = true;
   return out;
 }
 
@@ -356,6 +358,29 @@ bool RejectInvalidOptions(const StaticsOptions& options, StaticsSummary* sum) {
   sum->termination = TerminationType::kInvalidOptions;
   sum->message = "invalid statics options: " + why;
   return true;
+}
+
+// Second-order correction (Nocedal & Wright, "Numerical Optimization", 2nd ed., sec. 15.4 and
+// Alg. 18.3). A support's position is the sum of the rotated elements between it and its
+// reference, so across a long stretch (a branch of a harness tree) a step that is small in
+// every frame still misses the linearised constraint by ~ length x rotation^2: the merit
+// rejects it and the line search crawls at 1/32 steps. The correction d solves the same KKT
+// system (already factorised) for the constraint error the linearisation left, e = c(x + p) -
+// (c(x) + J p), so x + p + d is on the linearised constraint to higher order; it is taken when
+// it meets the sufficient decrease the full step was asked for. `state` holds x + p on entry;
+// on success it holds x + p + d.
+bool SecondOrderCorrection(const RodModel& model, const KktLdlt& kkt_ldlt, const Evaluation& ev,
+                           const Eigen::VectorXd& step, const Eigen::VectorXd& c_trial, double nu,
+                           const std::vector<char>& free, const Eigen::VectorXd& compliance,
+                           double phi_wanted, RodState* state) {
+  const Eigen::VectorXd error = c_trial - (ev.c + ev.jac * step);
+  Eigen::VectorXd correction, unused;
+  kkt_ldlt.Solve(Eigen::VectorXd::Zero(ev.gradient.size()), error, &correction, &unused);
+  if (!correction.allFinite()) return false;
+  for (int k = 0; k < correction.size(); ++k)
+    if (!free[k]) correction[k] = 0.0;
+  ApplyStep(model, correction, 1.0, state);
+  return Merit(model, *state, nu, free, compliance) <= phi_wanted;
 }
 
 }  // namespace
@@ -498,6 +523,14 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
           accepted = true;
           break;
         }
+        if (kkt.factored && trial.c.size() &&
+            SecondOrderCorrection(model, kkt_ldlt, ev, step, trial.c, nu, free, compliance,
+                                  phi0 + kArmijoDecrease * std::min(slope, 0.0), state)) {
+          ++sum.second_order_corrections;
+          accepted = true;
+          break;
+        }
+        *state = start;
       }
     }
     if (!accepted) {

@@ -51,6 +51,7 @@ struct StaticsSummary {
   std::string message;
   int iterations = 0;             // Newton iterations in total
   int continuation_steps = 0;     // 0 when the direct solve converged
+  int second_order_corrections = 0;  // full steps taken with a second-order correction
   double initial_energy = 0.0;    // [J]
   double final_energy = 0.0;      // [J]
   double gradient_norm = 0.0;     // [N m] final max-norm of the Lagrangian gradient
