@@ -2,18 +2,14 @@
 
 #include <cmath>
 
+#include "cablefit/app/relax_cable.h"
+
 namespace cablefit::addin {
 namespace {
 
-MaterialSpec Bundle(double diameter) {
-  // The default bundle estimate of relax (E ~ 75 MPa, 2000 kg/m^3 over the disc).
-  MaterialSpec m;
-  m.diameter = diameter;
-  m.bending_stiffness = 75e6 * M_PI * std::pow(diameter, 4) / 64;
-  m.torsional_stiffness = m.bending_stiffness / 1.3;
-  m.linear_density = 2000 * M_PI * diameter * diameter / 4;
-  return m;
-}
+// The material relax gives a bundle it knows only the diameter of (EA included: its supports
+// are then compliant rows, as in a relax).
+MaterialSpec Bundle(double diameter) { return DefaultBundleMaterial(diameter, 0.0); }
 
 // A straight branch from a to b drawn drooping by 1.5 % of each clip interval between its clips
 // (clips at interval ends except at junction ends); returns the route and sets the clips.

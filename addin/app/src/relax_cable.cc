@@ -470,6 +470,7 @@ Json CableToJson(const CableRelaxation& r, const DrawnCable& drawn) {
                  {"iterations", res.newton_iterations},
                  {"elements", res.level_elements.empty() ? 0 : res.level_elements.back()},
                  {"estimated_error", NumberOrNull(res.estimated_error)},
+                 {"accuracy", res.accuracy},
                  {"accuracy_met", res.accuracy_met},
                  {"message", res.solution.summary.message},
                  {"seconds", r.seconds}};

@@ -294,6 +294,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   for (CableRelaxation& r : out.cables) {
     r.result.estimated_error = error;
     r.result.accuracy_met = converged && error <= std::max(options.accuracy, 1e-4 * min_d);
+    r.result.accuracy = options.accuracy;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (CableRelaxation& r : out.cables) r.seconds = seconds;

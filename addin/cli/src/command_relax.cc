@@ -48,6 +48,7 @@ struct RelaxArgs {
   int jobs = 0;
   std::string unit = "mm";
   double accuracy = 1e-6;
+  bool accuracy_given = false;  // --accuracy on the command line (else KBL input gets kKblAccuracy)
   bool pictures = true;
   bool close_ups = false;
   double timeout = 0.0;  // [s] per cable (or group solved together), 0 = no limit
@@ -151,6 +152,12 @@ int RunRelax(const RelaxArgs& a) {
   sim_options.accuracy = a.accuracy;
   std::string why;
   if (!sim_options.IsValid(&why)) throw InvalidInput("--accuracy: " + why);
+  // A KBL harness is relaxed to kKblAccuracy unless --accuracy was given.
+  auto options_for = [&](const RelaxedFile& f) {
+    SimulationOptions o = sim_options;
+    if (!a.accuracy_given && f.own_config != nullptr) o.accuracy = kKblAccuracy;
+    return o;
+  };
 
   std::vector<std::string> failures;  // "<file>: <problem>"
   const std::vector<std::string> paths = ExpandInputs(a.inputs, &failures);
@@ -273,7 +280,7 @@ int RunRelax(const RelaxArgs& a) {
     const auto t0 = Clock::now();
     const CancellationScope deadline(a.timeout);  // the solver checks it (core/base/cancellation.h)
     GroupOutcome g = RelaxGroupCables(f.drawing, job.group, boxes[static_cast<size_t>(job.file)],
-                                      ConfigOf(f, config), sim_options);
+                                      ConfigOf(f, config), options_for(f));
     const std::string& problem = g.problem;
     std::vector<CableRelaxation>& done = g.cables;
     job_network[static_cast<size_t>(k)] = std::move(g.network);
@@ -302,10 +309,10 @@ int RunRelax(const RelaxArgs& a) {
     MeasureFileClearances(ConfigOf(f, config), &f);
     for (const ClearancePair& p : f.clearances)
       if (p.violation()) bar.PrintLine(stdout, f.stem + ": CLEARANCE: " + ClearanceViolationText(p));
-    RunFileMotion(ConfigOf(f, config), sim_options, &f);  // the harness.json motion, if any
+    RunFileMotion(ConfigOf(f, config), options_for(f), &f);  // the harness.json motion, if any
     if (f.motion)
       for (const std::string& line : MotionLines(*f.motion)) bar.PrintLine(stdout, f.stem + ": " + line);
-    RunFileTolerance(ConfigOf(f, config), sim_options, &f);  // harness.json tolerances, if any
+    RunFileTolerance(ConfigOf(f, config), options_for(f), &f);  // harness.json tolerances, if any
     if (f.tolerance)
       for (const std::string& line : ToleranceLines(*f.tolerance)) bar.PrintLine(stdout, f.stem + ": " + line);
   }
@@ -427,9 +434,12 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--unit", args->unit, "length unit of mesh files (m, cm, mm, um, in, ft)")
       ->check(CLI::IsMember({"m", "cm", "mm", "um", "in", "inch", "ft"}))
       ->capture_default_str();
-  cmd->add_option("--accuracy", args->accuracy, "requested accuracy of relaxed positions [m]")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  CLI::Option* accuracy =
+      cmd->add_option("--accuracy", args->accuracy,
+                      "requested accuracy of relaxed positions [m] (KBL harnesses: 1e-4 unless "
+                      "given)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
   cmd->add_flag_callback("--no-pictures", [args] { args->pictures = false; },
                          "skip the deviation pictures");
   cmd->add_flag("--close-ups", args->close_ups,
@@ -440,7 +450,10 @@ void RegisterRelaxCommand(CLI::App& app, int* exit_code) {
   cmd->add_option("--summary-json", args->summary_json,
                   "also write the run summary (per input and cable: status, errors; counts, "
                   "seconds, provenance) as JSON to this file");
-  cmd->callback([args, exit_code] { *exit_code = RunRelax(*args); });
+  cmd->callback([args, exit_code, accuracy] {
+    args->accuracy_given = accuracy->count() > 0;
+    *exit_code = RunRelax(*args);
+  });
 }
 
 }  // namespace cablefit::addin

@@ -145,6 +145,7 @@ SimulationResult RodSimulator::ResimulateWith(const RodSpec& spec, const Statics
 
 SimulationResult RodSimulator::Finish(std::vector<StaticsSummary> summaries, double seconds) {
   SimulationResult r;
+  r.accuracy = options_.accuracy;
   r.seconds = seconds;
   r.converged = !summaries.empty() && std::all_of(summaries.begin(), summaries.end(),
                                                   [](const StaticsSummary& s) { return s.converged(); });

@@ -60,6 +60,10 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
                 relaxed - virtual_length, 1e-12);
     // Every support carries its reaction.
     for (const Json& sp : c.at("supports")) EXPECT_TRUE(sp.contains("reaction")) << c.at("name");
+    // Without --accuracy a harness is relaxed to a tenth of a millimetre, and gets there.
+    EXPECT_EQ(c.at("solver").at("accuracy").get<double>(), 1e-4) << c.at("name");
+    EXPECT_TRUE(c.at("solver").at("accuracy_met").get<bool>()) << c.at("name");
+    EXPECT_LE(c.at("solver").at("estimated_error").get<double>(), 1e-4) << c.at("name");
   }
   EXPECT_EQ(names.size(), 30u);
   for (int k = 1; k <= 30; ++k) EXPECT_TRUE(names.count("Segment_" + std::to_string(k))) << k;
@@ -89,6 +93,17 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
               1e-12);
   EXPECT_EQ(s1.at("kbl").at("protections").at(0).at("mass_added"), true);
   EXPECT_NEAR(CableNamed(gen, "Segment_3").at("diameter").get<double>(), 0.012, 1e-12);
+}
+
+TEST(RelaxKblCli, AnAccuracyGivenOnTheCommandLineHoldsForKblToo) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_accuracy");
+  const auto run = RunCablefit("relax " + Q(Kbl(std::string(kGearbox) + ".kbl")) + " --out " +
+                               Q(out) + " --accuracy 0.002 --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const Json j = json::ReadJsonFile((out / (std::string(kGearbox) + ".json")).string());
+  ASSERT_FALSE(j.at("cables").empty());
+  for (const Json& c : j.at("cables"))
+    EXPECT_EQ(c.at("solver").at("accuracy").get<double>(), 0.002) << c.at("name");
 }
 
 TEST(RelaxKblCli, ABrokenKblFileFailsAloneAndTheBatchGoesOn) {

@@ -18,6 +18,11 @@ namespace cablefit::addin {
 /// machine into a taped bundle fill about 70-80 % of the disc; mid value, an assumption.
 inline constexpr double kBundlePackingFraction = 0.75;
 
+/// [m] Accuracy a KBL harness is relaxed to unless --accuracy says otherwise: a tenth of the ~1 mm
+/// a harness drawing is read to, far below the uncertainty of an estimated bundle stiffness, and
+/// reachable within the network element cap (the general 1 um default is not, on a harness).
+inline constexpr double kKblAccuracy = 1e-4;
+
 /// A segment's bundle from its wires.
 struct KblBundle {
   /// [m] one wire: its outside diameter; several: sqrt(sum d_i^2 / kBundlePackingFraction);

@@ -45,6 +45,7 @@ struct SimulationResult {
   double seconds = 0.0;
   bool converged = false;           // every level converged
   bool accuracy_met = false;
+  double accuracy = 0.0;            ///< [m] the accuracy asked for (SimulationOptions::accuracy)
 };
 
 class RodSimulator {
