@@ -91,7 +91,9 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   addin::HarnessConfig& config = state->config;
   if (!config_path.empty()) config = addin::ReadHarnessConfig(config_path);
   SimulationOptions options;
-  options.accuracy = accuracy;
+  const bool kbl = addin::IsKblInput(input);
+  if (!(accuracy <= 0)) options.accuracy = accuracy;  // NaN too: IsValid rejects it
+  else if (kbl) options.accuracy = addin::kKblAccuracy;
   std::string why;
   if (!options.IsValid(&why)) throw InvalidInput("accuracy: " + why);
 
@@ -103,7 +105,7 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   const bool cancel_at_read =
       progress && !progress(0.0, "read " + fs::path(input).filename().string());
   auto t0 = Clock::now();
-  if (addin::IsKblInput(input)) {
+  if (kbl) {
     // As the command line: the file's own physics per segment, the user's harness.json over it.
     addin::KblInput kbl = addin::ReadKblInput(input, config);
     f.drawing = std::move(kbl.drawing);

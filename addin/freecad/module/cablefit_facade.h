@@ -62,7 +62,8 @@ class HarnessRelaxation {
  public:
   /// Reads `input` (STEP/IGES/mesh, `mesh_unit` for meshes), reads `config_path`
   /// (harness.json, may be empty) and relaxes every cable like `cablefit relax --accuracy
-  /// --timeout`: a cable (or group) taking longer than `timeout` seconds (<= 0: no limit)
+  /// --timeout` (`accuracy` <= 0: the command line's default for the input, 1e-4 m for a KBL
+  /// harness and 1e-6 m otherwise): a cable (or group) taking longer than `timeout` seconds (<= 0: no limit)
   /// fails with "timed out after N s". `progress` (may be empty) gets (fraction, stage);
   /// returning false cancels: the remaining cables fail with "cancelled". Throws
   /// FileError/InvalidInput for unreadable inputs.

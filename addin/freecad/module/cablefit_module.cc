@@ -132,10 +132,10 @@ PYBIND11_MODULE(cablefit_native, m) {
         p.RethrowIfFailed();
         return r;
       },
-      py::arg("input"), py::arg("config") = "", py::arg("accuracy") = 1e-6,
+      py::arg("input"), py::arg("config") = "", py::arg("accuracy") = 0.0,
       py::arg("mesh_unit") = "mm", py::arg("progress") = py::none(), py::arg("timeout") = 0.0,
       "Relax every cable of a STEP/IGES/KBL/mesh file like `cablefit relax INPUT --config CONFIG "
-      "--timeout T`. progress(fraction, stage) returning False (or raising) cancels.");
+      "--timeout T` (accuracy 0: the command line's default for the input). progress(fraction, stage) returning False (or raising) cancels.");
 
   m.def("deviation_colour", &cablefit::freecad::DeviationColour, py::arg("value"), py::arg("lo"),
         py::arg("hi"), "sRGB (r, g, b) in [0, 1] of value on the relax pictures' colour scale");

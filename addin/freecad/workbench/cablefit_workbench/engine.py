@@ -181,7 +181,7 @@ def relax_file(path, doc, config="", progress=None):
     a mesh in mm) and adds its cables to `doc` in a group named after the file: each relaxed
     cable as its tube, labelled with its name, with its largest deviation and status; a failed
     one as its drawn route. Returns (relaxation, group)."""
-    relaxation = native().relax(path, config, 1e-6, "mm", progress)
+    relaxation = native().relax(path, config, 0.0, "mm", progress)  # the CLI's default accuracy
     stem = os.path.splitext(os.path.basename(path))[0]
     group = doc.addObject("App::DocumentObjectGroup", "Harness")
     group.Label = stem
