@@ -25,6 +25,12 @@ CurveSkeleton ComputeMcfSkeleton(const TriangleMesh& mesh);
 /// not depend on what this process did before. Throws InvalidInput as ComputeMcfSkeleton does,
 /// and when the helper crashes or runs longer than `max_seconds`. Computes in this process when
 /// no helper can be started.
-CurveSkeleton ComputeMcfSkeletonInHelper(const TriangleMesh& mesh, double max_seconds = 600.0);
+CurveSkeleton ComputeMcfSkeletonInHelper(const TriangleMesh& mesh, double max_seconds);
+
+/// [s] How long the skeleton of `mesh` may take: 60 s plus 1 ms per input triangle. The flow
+/// itself runs on ~15 000 remeshed triangles whatever the input (~0.5 s), the remeshing grows
+/// with the input; a healthy 6 000-triangle tube takes ~0.8 s in all, so this leaves a margin of
+/// 50x and more, and a mesh that sends CGAL into a loop fails in about a minute, not ten.
+double SkeletonSecondsFor(const TriangleMesh& mesh);
 
 }  // namespace cablefit

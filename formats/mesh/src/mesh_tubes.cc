@@ -274,7 +274,7 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
     throw InvalidInput("component " + std::to_string(component) +
                        " is not a tube (flat faces: a box, plate or bracket)");
   }
-  const CurveSkeleton skeleton = ComputeMcfSkeletonInHelper(mesh);
+  const CurveSkeleton skeleton = ComputeMcfSkeletonInHelper(mesh, SkeletonSecondsFor(mesh));
   // A first radius from the skeleton's correspondences: the median vertex-to-node distance.
   std::vector<double> distances;
   for (size_t n = 0; n < skeleton.vertex_points.size(); ++n) {

@@ -121,6 +121,10 @@ std::string ReadText(const std::string& path) {
 
 }  // namespace
 
+double SkeletonSecondsFor(const TriangleMesh& mesh) {
+  return 60.0 + 1e-3 * static_cast<double>(mesh.faces.cols());
+}
+
 CurveSkeleton ComputeMcfSkeletonInHelper(const TriangleMesh& mesh, double max_seconds) {
   const MemoryFile mesh_file("cablefit-mesh");
   const MemoryFile skeleton_file("cablefit-skeleton");
