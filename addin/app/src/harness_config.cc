@@ -326,6 +326,7 @@ CableConfig Overlaid(CableConfig base, const CableConfig& top) {
     base.min_bend_radius_source = top.min_bend_radius_source;
   }
   if (!top.supports.empty()) base.supports = top.supports;
+  if (!top.sleeves.empty()) base.sleeves = top.sleeves;
   return base;
 }
 

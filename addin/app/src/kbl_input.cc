@@ -42,11 +42,22 @@ KblBundle BundleOf(const std::vector<KblWire>& wires) {
   return b;
 }
 
-double ProtectionMassPerLength(const std::vector<KblProtection>& protections) {
-  double sum = 0.0;
-  for (const KblProtection& p : protections)
-    if (p.linear_density) sum += *p.linear_density * (p.end - p.start);
-  return sum;
+bool IsTape(const std::string& type) {
+  std::string t = type;
+  std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::toupper(c); });
+  return t.find("TAPE") != std::string::npos || t.find("BAND") != std::string::npos;
+}
+
+// What a tape wrap adds to a bundle of diameter d: a thin tube of kTapeWrapThickness and
+// kTapeModulus around it (EI = E pi/64 ((d + 2t)^4 - d^4), GJ = EI / 1.3 as for the bundle).
+SleeveConfig TapeSleeve(const KblProtection& p, double d) {
+  SleeveConfig s;
+  s.from = std::clamp(p.start, 0.0, 1.0);
+  s.to = std::clamp(p.end, 0.0, 1.0);
+  const double outer = d + 2 * kTapeWrapThickness;
+  s.bending_stiffness = kTapeModulus * M_PI / 64 * (std::pow(outer, 4) - std::pow(d, 4));
+  s.torsional_stiffness = s.bending_stiffness / 1.3;
+  return s;
 }
 
 bool IsKblPath(const std::string& path) {
@@ -87,16 +98,6 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
       if (bundle.linear_density > 0) {
         m.linear_density = bundle.linear_density;
         source += ", mass from the wires";
-        // A rod has one material along its length: a protection's mass is spread over the
-        // whole segment (right in total, not in where it sits); its stiffness is not added.
-        const double protection = ProtectionMassPerLength(seg.protections);
-        if (protection > 0) {
-          m.linear_density += protection;
-          source += " and protections (spread over the segment)";
-          assumed.push_back(
-              "protection mass spread over the segment, protection stiffness not "
-              "modelled");
-        }
       } else {
         assumed.push_back("mass per length estimated from the diameter (not every wire gives one)");
       }
@@ -111,6 +112,28 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
       diameter_source = "default";
       assumed.push_back("no wire data and no cross-section area: default diameter and material");
     }
+    // Protections are sleeves over their share of the segment: their own mass per length where
+    // the file gives it, and a tape's stiffness (assumed); other types' stiffness is unknown.
+    std::vector<char> stiffness_added(seg.protections.size(), 0);
+    for (size_t k = 0; k < seg.protections.size(); ++k) {
+      const KblProtection& p = seg.protections[k];
+      if (!(p.end > p.start)) continue;
+      SleeveConfig sl;
+      if (IsTape(p.type) && drawn.diameter > 0) {
+        sl = TapeSleeve(p, drawn.diameter);
+        stiffness_added[k] = 1;
+      } else {
+        sl.from = std::clamp(p.start, 0.0, 1.0);
+        sl.to = std::clamp(p.end, 0.0, 1.0);
+        assumed.push_back("protection " + p.id + " (" + (p.type.empty() ? "no type" : p.type) +
+                          "): stiffness unknown, not added");
+      }
+      if (p.linear_density) sl.linear_density = *p.linear_density;
+      if (sl.to > sl.from && (sl.bending_stiffness > 0 || sl.linear_density > 0))
+        cc.sleeves.push_back(sl);
+    }
+    if (std::find(stiffness_added.begin(), stiffness_added.end(), 1) != stiffness_added.end())
+      assumed.push_back("tape stiffness assumed (two layers of 0.13 mm, E 20 MPa)");
     if (bundle.min_bend_radius > 0) {
       cc.min_bend_radius = bundle.min_bend_radius;
       cc.min_bend_radius_source = "KBL: tightest Bend_radius of the segment's wires";
@@ -147,15 +170,16 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
                        {"min_bend_radius", OptionalNumber(w.min_bend_radius)}});
     }
     json::Json protections = json::Json::array();
-    for (const KblProtection& p : seg.protections) {
+    for (size_t k = 0; k < seg.protections.size(); ++k) {
+      const KblProtection& p = seg.protections[k];
       protections.push_back(
           {{"id", p.id},
            {"type", p.type},
            {"start", p.start},
            {"end", p.end},
            {"linear_density", OptionalNumber(p.linear_density)},
-           {"mass_added", bundle.linear_density > 0 && p.linear_density.has_value()},
-           {"stiffness_added", false}});
+           {"mass_added", p.linear_density.has_value() && p.end > p.start},
+           {"stiffness_added", stiffness_added[k] != 0}});
     }
     auto end_json = [](const KblSegmentEnd& e) {
       return json::Json{{"node", e.node},

@@ -182,6 +182,10 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   }
   out.spec.name = drawn.name;
   out.spec.length = built_length;
+  for (const SleeveConfig& sl : cc.sleeves) {
+    out.spec.sleeves.push_back({sl.from * built_length, sl.to * built_length,
+                                sl.bending_stiffness, sl.torsional_stiffness, sl.linear_density});
+  }
   out.drawn_length = length;
   if (built_length != length) {
     out.notes.push_back("built " + Millimetres(built_length) + " long (harness.json \"length\": " +

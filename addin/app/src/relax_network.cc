@@ -218,6 +218,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
     br.name = su.name;
     br.length = su.spec.length;
     br.material = su.spec.material;
+    br.sleeves = su.spec.sleeves;
     br.supports = su.spec.supports;
     br.route = su.route;
     spec.gravity = su.spec.gravity;

@@ -115,6 +115,7 @@ RodSpec BranchRodSpec(const NetworkSpec& spec, int b) {
   rs.name = br.name;
   rs.length = br.length;
   rs.material = br.material;
+  rs.sleeves = br.sleeves;
   rs.gravity = spec.gravity;
   rs.supports = br.supports;
   rs.natural_curvature = br.natural_curvature;

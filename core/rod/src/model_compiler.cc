@@ -19,6 +19,41 @@ Mat3 SeriesStiffness(double ds, const std::vector<std::pair<double, Mat3>>& piec
   return ds * flexibility.inverse();
 }
 
+// The material stiffness at arc length s of a branch: its own, plus every sleeve over s.
+Mat3 StiffnessAt(const RodSpec& spec, const Mat3& own, double s) {
+  Mat3 k = own;
+  for (const SleeveSpec& sl : spec.sleeves)
+    if (s > sl.s_begin && s < sl.s_end)
+      k += Eigen::Vector3d(sl.bending_stiffness, sl.bending_stiffness, sl.torsional_stiffness)
+               .asDiagonal();
+  return k;
+}
+
+// Stiffness of the edge between frame samples at sa < sb: the pieces between the sleeve ends
+// inside it in series (without sleeves, or within one, simply the material there).
+Mat3 EdgeStiffness(const RodSpec& spec, const Mat3& own, double sa, double sb) {
+  if (spec.sleeves.empty()) return own;
+  std::vector<double> cuts = {sa, sb};
+  for (const SleeveSpec& sl : spec.sleeves)
+    for (const double c : {sl.s_begin, sl.s_end})
+      if (c > sa && c < sb) cuts.push_back(c);
+  std::sort(cuts.begin(), cuts.end());
+  if (cuts.size() == 2) return StiffnessAt(spec, own, 0.5 * (sa + sb));
+  std::vector<std::pair<double, Mat3>> pieces;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i)
+    if (cuts[i + 1] > cuts[i])
+      pieces.emplace_back(cuts[i + 1] - cuts[i], StiffnessAt(spec, own, 0.5 * (cuts[i] + cuts[i + 1])));
+  return SeriesStiffness(sb - sa, pieces, 0.0);
+}
+
+// Mass per length at arc length s of a branch [kg/m]: its own, plus every sleeve over s.
+double DensityAt(const RodSpec& spec, double s) {
+  double rho = spec.material.linear_density;
+  for (const SleeveSpec& sl : spec.sleeves)
+    if (s > sl.s_begin && s < sl.s_end) rho += sl.linear_density;
+  return rho;
+}
+
 int NearestIndex(const Eigen::VectorXd& s, double v) {
   Eigen::Index i;
   (s.array() - v).abs().minCoeff(&i);
@@ -138,7 +173,7 @@ void LayOutBranchItems(const std::vector<ModelBranch>& branches,
       e.ds = ib.s - ia.s;
       CABLEFIT_CHECK(e.ds > 0, "frame samples must advance along the branch");
       e.s = 0.5 * (ia.s + ib.s);
-      e.stiffness = branch_k[b];
+      e.stiffness = EdgeStiffness(spec, branch_k[b], ia.s, ib.s);
       e.natural = AverageNaturalCurvature(spec.natural_curvature, ia.s, ib.s);
       m.edges.push_back(e);
     }
@@ -154,6 +189,10 @@ void LayOutJunctions(const std::vector<ModelBranch>& branches,
     return end == 0 ? out->branches[b].first_item : out->branches[b].last_item;
   };
   auto half_element = [&](int b, int end) { return 0.5 * m.items[end_item(b, end)].length; };
+  // The material of a branch's end element (a sleeve reaching the branch end included).
+  auto end_stiffness = [&](int b, int end) {
+    return StiffnessAt(*branches[b].spec, branch_k[b], m.items[end_item(b, end)].s);
+  };
   for (size_t j = 0; j < junctions.size(); ++j) {
     JunctionLayout& jl = out->junctions[j];
     const double compliance = junctions[j].compliance;
@@ -170,7 +209,8 @@ void LayOutJunctions(const std::vector<ModelBranch>& branches,
       const double h0 = half_element(b0, e0), h1 = half_element(b1, e1);
       e.ds = h0 + h1;
       e.s = 0.0;
-      e.stiffness = SeriesStiffness(e.ds, {{h0, branch_k[b0]}, {h1, branch_k[b1]}}, compliance);
+      e.stiffness = SeriesStiffness(e.ds, {{h0, end_stiffness(b0, e0)}, {h1, end_stiffness(b1, e1)}},
+                                    compliance);
       e.has_rest = true;
       jl.edges = {-1, -1};
       m.edges.push_back(e);
@@ -190,7 +230,7 @@ void LayOutJunctions(const std::vector<ModelBranch>& branches,
       e.b = end_item(b, end);
       e.ds = half_element(b, end);
       e.s = end == 0 ? 0.0 : branches[b].spec->length;
-      e.stiffness = SeriesStiffness(e.ds, {{e.ds, branch_k[b]}}, compliance);
+      e.stiffness = SeriesStiffness(e.ds, {{e.ds, end_stiffness(b, end)}}, compliance);
       e.has_rest = true;
       jl.edges.push_back(static_cast<int>(m.edges.size()));
       m.edges.push_back(e);
@@ -253,8 +293,8 @@ ModelLayout CompileModelLayout(const std::vector<ModelBranch>& branches,
   const int ne = m.num_elements, num_nodes = static_cast<int>(m.node_s.size());
   m.node_mass = Eigen::VectorXd::Zero(num_nodes);
   for (int e = 0; e < ne; ++e) {
-    const double half =
-        0.5 * branches[element_branch[e]].spec->material.linear_density * m.element_length[e];
+    const double half = 0.5 * DensityAt(*branches[element_branch[e]].spec, m.items[m.element_item[e]].s) *
+                        m.element_length[e];
     m.node_mass[m.element_nodes[e][0]] += half;
     m.node_mass[m.element_nodes[e][1]] += half;
   }

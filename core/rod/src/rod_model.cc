@@ -152,6 +152,21 @@ void ValidateRodSpec(const RodSpec& spec, bool require_support) {
                          "] is not inside the cable");
     if (nc.ramp < 0) throw InvalidInput("natural curvature ramp must be >= 0");
   }
+  for (const SleeveSpec& sl : spec.sleeves) {
+    if (!std::isfinite(sl.s_begin) || !std::isfinite(sl.s_end) || sl.s_begin < -tol ||
+        sl.s_end > spec.length + tol || !(sl.s_end > sl.s_begin))
+      throw InvalidInput("sleeve [" + Num(sl.s_begin) + ", " + Num(sl.s_end) +
+                         "] is not an interval inside the cable [0, " + Num(spec.length) + "]");
+    for (const double v : {sl.bending_stiffness, sl.torsional_stiffness, sl.linear_density})
+      if (!std::isfinite(v) || v < 0)
+        throw InvalidInput("sleeve [" + Num(sl.s_begin) + ", " + Num(sl.s_end) +
+                           "]: stiffness and mass per length must be finite numbers >= 0");
+    if (sl.bending_stiffness > 1e9 || sl.torsional_stiffness > 1e9)
+      throw InvalidInput("sleeve bending or torsional stiffness beyond 1e9 N m^2");
+    if (sl.linear_density > 1e5)
+      throw InvalidInput("sleeve mass per length " + Num(sl.linear_density) +
+                         " kg/m is beyond 100 t/m");
+  }
   for (const PointLoadSpec& pl : spec.point_loads) {
     if (!std::isfinite(pl.s) || pl.s < -tol || pl.s > spec.length + tol)
       throw InvalidInput("point load at s=" + Num(pl.s) + " lies outside the cable");
@@ -163,6 +178,11 @@ std::vector<double> SpanBreakpoints(const RodSpec& spec) {
   std::vector<double> b = {0.0, spec.length};
   for (const auto& sp : spec.supports) b.push_back(std::clamp(sp.s, 0.0, spec.length));
   for (const auto& pl : spec.point_loads) b.push_back(std::clamp(pl.s, 0.0, spec.length));
+  // A sleeve's ends are element boundaries: each element is then all sleeve or none of it.
+  for (const SleeveSpec& sl : spec.sleeves) {
+    b.push_back(std::clamp(sl.s_begin, 0.0, spec.length));
+    b.push_back(std::clamp(sl.s_end, 0.0, spec.length));
+  }
   std::sort(b.begin(), b.end());
   const double tol = 1e-9 * spec.length;
   std::vector<double> out;

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "test_support.h"
+
 namespace cablefit::addin {
 namespace {
 
@@ -41,13 +43,25 @@ TEST(KblBundle, MassOnlyWhenEveryWireGivesIt) {
   EXPECT_EQ(b.min_bend_radius, 0.0);
 }
 
-TEST(KblBundle, ProtectionMassIsWeightedByTheShareOfTheSegmentItCovers) {
-  KblProtection tape;
-  tape.start = 0.25;
-  tape.end = 0.75;
-  tape.linear_density = 0.006;
-  KblProtection unknown;  // no mass per length: adds nothing
-  EXPECT_NEAR(ProtectionMassPerLength({tape, unknown}), 0.003, 1e-15);
+TEST(KblInput, AProtectionIsASleeveOverItsShareOfTheSegment) {
+  // The generator harness: Segment_1's PET tape (6 g/m) from 0.045496 of the segment to its end.
+  const KblInput in = ReadKblInput(
+      (testing::SourceDir() /
+       "tests/data/kbl/kblxml_2.3sr-1_000971230_ltgs_generator_170718.kbl").string(),
+      HarnessConfig{});
+  const CableConfig& s1 = in.config.cables.at("Segment_1");
+  ASSERT_EQ(s1.sleeves.size(), 1u);
+  const SleeveConfig& tape = s1.sleeves[0];
+  EXPECT_NEAR(tape.from, 0.045496, 1e-12);
+  EXPECT_EQ(tape.to, 1.0);
+  EXPECT_NEAR(tape.linear_density, 0.006, 1e-15);
+  // A wrap of two 0.13 mm layers at 20 MPa around the bundle of 1.6, 1.6 and 5.1 mm wires.
+  const double d = 1e-3 * std::sqrt((1.6 * 1.6 * 2 + 5.1 * 5.1) / kBundlePackingFraction);
+  const double ei = 20e6 * M_PI / 64 * (std::pow(d + 0.26e-3, 4) - std::pow(d, 4));
+  EXPECT_NEAR(tape.bending_stiffness, ei, 1e-12 * ei);
+  EXPECT_NEAR(tape.torsional_stiffness, ei / 1.3, 1e-12 * ei);
+  // The wires' own mass stays the bundle's: the tape's sits where the tape is.
+  EXPECT_NEAR(s1.material->linear_density, 0.080, 1e-12);
 }
 
 }  // namespace

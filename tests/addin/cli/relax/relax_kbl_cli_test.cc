@@ -87,11 +87,11 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
   const double bundle = 1e-3 * std::sqrt((1.6 * 1.6 * 2 + 5.1 * 5.1) / 0.75);
   EXPECT_NEAR(s1.at("diameter").get<double>(), bundle, 1e-9);
   EXPECT_NEAR(s1.at("kbl").at("bundle_diameter").get<double>(), bundle, 1e-9);
-  // Mass per length from the wires, 6 + 6 + 68 g/m, plus the PET tape (6 g/m) over
-  // 1 - 0.045496 of the segment, spread.
-  EXPECT_NEAR(s1.at("material").at("linear_density").get<double>(), 0.080 + 0.006 * (1 - 0.045496),
-              1e-12);
+  // Mass per length from the wires, 6 + 6 + 68 g/m; the PET tape (6 g/m, and a tape wrap's
+  // assumed stiffness) is a sleeve from 0.045496 of the segment to its end.
+  EXPECT_NEAR(s1.at("material").at("linear_density").get<double>(), 0.080, 1e-12);
   EXPECT_EQ(s1.at("kbl").at("protections").at(0).at("mass_added"), true);
+  EXPECT_EQ(s1.at("kbl").at("protections").at(0).at("stiffness_added"), true);
   EXPECT_NEAR(CableNamed(gen, "Segment_3").at("diameter").get<double>(), 0.012, 1e-12);
 }
 

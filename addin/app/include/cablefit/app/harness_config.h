@@ -40,6 +40,15 @@ struct CableLength {
 };
 
 /// What harness.json says about one cable (or the defaults for all cables).
+/// Stiffness and weight added over part of a cable (a KBL protection: tape, corrugated tube), as
+/// shares of its length so that they stay where they are when harness.json changes the length.
+struct SleeveConfig {
+  double from = 0.0, to = 1.0;       ///< shares of the cable's length, 0 <= from < to <= 1
+  double bending_stiffness = 0.0;    ///< EI added [N m^2]
+  double torsional_stiffness = 0.0;  ///< GJ added [N m^2]
+  double linear_density = 0.0;       ///< [kg/m] added
+};
+
 struct CableConfig {
   /// Rod material without diameter; unset -> derived from the diameter (see relax_material.h).
   std::optional<MaterialSpec> material;
@@ -60,6 +69,9 @@ struct CableConfig {
   /// [m] the least surface distance the cable must keep from solids and other cables
   /// ("min_clearance"); unset = none asked (clearances are still measured and reported).
   std::optional<double> min_clearance;
+  /// Sleeves over parts of the cable (a KBL file's protections). Not read from harness.json;
+  /// they stay when harness.json gives the cable's material (they sit on top of it).
+  std::vector<SleeveConfig> sleeves;
 
   /// [m] the diameter a cable drawn with `drawn_diameter` (0: none) is relaxed with; 0 when
   /// neither the drawing nor harness.json gives one.

@@ -18,6 +18,13 @@ namespace cablefit::addin {
 /// machine into a taped bundle fill about 70-80 % of the disc; mid value, an assumption.
 inline constexpr double kBundlePackingFraction = 0.75;
 
+/// A tape wrap over a bundle (the protections of type TAPE): PVC or fabric tape 0.13 mm thick
+/// wound half-overlapped, so two layers [m], of a soft film's modulus [Pa]. Assumed values (the
+/// KBL gives the tape's part number, not its mechanics): on a 10 mm bundle the wrap adds ~6 % to
+/// the bundle's estimated EI.
+inline constexpr double kTapeWrapThickness = 2 * 0.13e-3;
+inline constexpr double kTapeModulus = 20e6;
+
 /// [m] Accuracy a KBL harness is relaxed to unless --accuracy says otherwise: a tenth of the ~1 mm
 /// a harness drawing is read to, far below the uncertainty of an estimated bundle stiffness, and
 /// reachable within the network element cap (the general 1 um default is not, on a harness).
@@ -37,10 +44,6 @@ struct KblBundle {
 
 /// The bundle of the wires routed through a segment.
 KblBundle BundleOf(const std::vector<KblWire>& wires);
-
-/// [kg/m] the protections' mass per length averaged over their segment: each part's mass per
-/// length times the share of the segment it covers.
-double ProtectionMassPerLength(const std::vector<KblProtection>& protections);
 
 /// True for the extension ".kbl" (any case).
 bool IsKblPath(const std::string& path);

@@ -18,6 +18,7 @@ struct BranchSpec {
   std::string name;
   double length = 0.0;  // [m]
   MaterialSpec material;
+  std::vector<SleeveSpec> sleeves;    // s along this branch
   std::vector<SupportSpec> supports;  // s along this branch, increasing
   std::vector<NaturalCurvatureSpec> natural_curvature;
   std::vector<PointLoadSpec> point_loads;

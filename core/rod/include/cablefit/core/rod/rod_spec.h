@@ -61,10 +61,23 @@ struct MaterialSpec {
   double axial_stiffness = 0.0;
 };
 
+/// A sleeve over part of the cable: a protection of a harness segment (tape, corrugated tube,
+/// heat-shrink, a hose over a bundle), or anything else that adds stiffness and weight to the
+/// cable over [s_begin, s_end] only. Its bending and torsional stiffness act in parallel with the
+/// cable's own there (isotropic in bending), its mass per length adds to the cable's.
+struct SleeveSpec {
+  double s_begin = 0.0;              // [m]
+  double s_end = 0.0;                // [m], > s_begin
+  double bending_stiffness = 0.0;    // EI added [N m^2]
+  double torsional_stiffness = 0.0;  // GJ added [N m^2]
+  double linear_density = 0.0;       // [kg/m] added
+};
+
 struct RodSpec {
   std::string name;
   double length = 0.0;  // [m]
   MaterialSpec material;
+  std::vector<SleeveSpec> sleeves;  ///< sleeves may overlap: where they do, both add
   Vec3 gravity = Vec3(0, 0, -9.81);  // [m/s^2]
   std::vector<SupportSpec> supports;
   std::vector<NaturalCurvatureSpec> natural_curvature;
