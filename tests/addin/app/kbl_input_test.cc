@@ -57,7 +57,7 @@ TEST(KblInput, AProtectionIsASleeveOverItsShareOfTheSegment) {
   EXPECT_NEAR(tape.linear_density, 0.006, 1e-15);
   // A wrap of two 0.13 mm layers at 20 MPa around the bundle of 1.6, 1.6 and 5.1 mm wires.
   const double d = 1e-3 * std::sqrt((1.6 * 1.6 * 2 + 5.1 * 5.1) / kBundlePackingFraction);
-  const double ei = 20e6 * M_PI / 64 * (std::pow(d + 0.26e-3, 4) - std::pow(d, 4));
+  const double ei = 20e6 * M_PI / 64 * (std::pow(d + 2 * 0.26e-3, 4) - std::pow(d, 4));
   EXPECT_NEAR(tape.bending_stiffness, ei, 1e-12 * ei);
   EXPECT_NEAR(tape.torsional_stiffness, ei / 1.3, 1e-12 * ei);
   // The wires' own mass stays the bundle's: the tape's sits where the tape is.
