@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
@@ -42,22 +43,28 @@ KblBundle BundleOf(const std::vector<KblWire>& wires) {
   return b;
 }
 
-bool IsTape(const std::string& type) {
-  std::string t = type;
+std::string Upper(std::string t) {
   std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return std::toupper(c); });
-  return t.find("TAPE") != std::string::npos || t.find("BAND") != std::string::npos;
+  return t;
 }
+bool Contains(const std::string& text, const char* part) { return text.find(part) != std::string::npos; }
 
-// What a tape wrap adds to a bundle of diameter d: a thin tube of kTapeWrapThickness and
-// kTapeModulus around it (EI = E pi/64 ((d + 2t)^4 - d^4), GJ = EI / 1.3 as for the bundle).
-SleeveConfig TapeSleeve(const KblProtection& p, double d) {
+// An annulus of wall `wall` and modulus `modulus` around a bundle of diameter d over the
+// protection's share: EI = E pi/64 ((d + 2 wall)^4 - d^4), GJ = EI / 1.3 as for the bundle.
+SleeveConfig AnnulusSleeve(const KblProtection& p, double d, double wall, double modulus) {
   SleeveConfig s;
   s.from = std::clamp(p.start, 0.0, 1.0);
   s.to = std::clamp(p.end, 0.0, 1.0);
-  const double outer = d + 2 * kTapeWrapThickness;
-  s.bending_stiffness = kTapeModulus * M_PI / 64 * (std::pow(outer, 4) - std::pow(d, 4));
+  s.bending_stiffness = modulus * M_PI / 64 * (std::pow(d + 2 * wall, 4) - std::pow(d, 4));
   s.torsional_stiffness = s.bending_stiffness / 1.3;
   return s;
+}
+
+std::string ProtectionKind(const std::string& type) {
+  const std::string t = Upper(type);
+  if (Contains(t, "TAPE") || Contains(t, "BAND")) return "tape";
+  if (Contains(t, "CORRUG") || Contains(t, "WELL") || Contains(t, "CONVOLUT")) return "corrugated tube";
+  return "";
 }
 
 bool IsKblPath(const std::string& path) {
@@ -115,13 +122,17 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
     // Protections are sleeves over their share of the segment: their own mass per length where
     // the file gives it, and a tape's stiffness (assumed); other types' stiffness is unknown.
     std::vector<char> stiffness_added(seg.protections.size(), 0);
+    std::set<std::string> kinds_added;
     for (size_t k = 0; k < seg.protections.size(); ++k) {
       const KblProtection& p = seg.protections[k];
       if (!(p.end > p.start)) continue;
       SleeveConfig sl;
-      if (IsTape(p.type) && drawn.diameter > 0) {
-        sl = TapeSleeve(p, drawn.diameter);
+      const std::string kind = ProtectionKind(p.type);
+      if (!kind.empty() && drawn.diameter > 0) {
+        sl = kind == "tape" ? AnnulusSleeve(p, drawn.diameter, kTapeWrapThickness, kTapeModulus)
+                            : AnnulusSleeve(p, drawn.diameter, kCorrugatedWall, kCorrugatedModulus);
         stiffness_added[k] = 1;
+        kinds_added.insert(kind);
       } else {
         sl.from = std::clamp(p.start, 0.0, 1.0);
         sl.to = std::clamp(p.end, 0.0, 1.0);
@@ -132,8 +143,10 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
       if (sl.to > sl.from && (sl.bending_stiffness > 0 || sl.linear_density > 0))
         cc.sleeves.push_back(sl);
     }
-    if (std::find(stiffness_added.begin(), stiffness_added.end(), 1) != stiffness_added.end())
-      assumed.push_back("tape stiffness assumed (two layers of 0.13 mm, E 20 MPa)");
+    if (kinds_added.count("tape"))
+      assumed.push_back("tape stiffness assumed (two layers of 0.13 mm PVC tape, E 40 MPa)");
+    if (kinds_added.count("corrugated tube"))
+      assumed.push_back("corrugated tube stiffness assumed (a 1.5 mm annulus, effective E 40 MPa)");
     if (bundle.min_bend_radius > 0) {
       cc.min_bend_radius = bundle.min_bend_radius;
       cc.min_bend_radius_source = "KBL: tightest Bend_radius of the segment's wires";

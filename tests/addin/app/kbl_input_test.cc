@@ -43,6 +43,15 @@ TEST(KblBundle, MassOnlyWhenEveryWireGivesIt) {
   EXPECT_EQ(b.min_bend_radius, 0.0);
 }
 
+TEST(KblInput, ProtectionKindsByTheirTypeName) {
+  EXPECT_EQ(ProtectionKind("TAPE"), "tape");
+  EXPECT_EQ(ProtectionKind("Gewebeband"), "tape");
+  EXPECT_EQ(ProtectionKind("Wellrohr NW10"), "corrugated tube");
+  EXPECT_EQ(ProtectionKind("corrugated_tube"), "corrugated tube");
+  EXPECT_EQ(ProtectionKind("PVC-Schlauch"), "");
+  EXPECT_EQ(ProtectionKind(""), "");
+}
+
 TEST(KblInput, AProtectionIsASleeveOverItsShareOfTheSegment) {
   // The generator harness: Segment_1's PET tape (6 g/m) from 0.045496 of the segment to its end.
   const KblInput in = ReadKblInput(
@@ -55,9 +64,10 @@ TEST(KblInput, AProtectionIsASleeveOverItsShareOfTheSegment) {
   EXPECT_NEAR(tape.from, 0.045496, 1e-12);
   EXPECT_EQ(tape.to, 1.0);
   EXPECT_NEAR(tape.linear_density, 0.006, 1e-15);
-  // A wrap of two 0.13 mm layers at 20 MPa around the bundle of 1.6, 1.6 and 5.1 mm wires.
+  // A wrap of two 0.13 mm layers of PVC tape (40 MPa, the section library's) around the bundle
+  // of 1.6, 1.6 and 5.1 mm wires.
   const double d = 1e-3 * std::sqrt((1.6 * 1.6 * 2 + 5.1 * 5.1) / kBundlePackingFraction);
-  const double ei = 20e6 * M_PI / 64 * (std::pow(d + 2 * 0.26e-3, 4) - std::pow(d, 4));
+  const double ei = 40e6 * M_PI / 64 * (std::pow(d + 2 * 0.26e-3, 4) - std::pow(d, 4));
   EXPECT_NEAR(tape.bending_stiffness, ei, 1e-12 * ei);
   EXPECT_NEAR(tape.torsional_stiffness, ei / 1.3, 1e-12 * ei);
   // The wires' own mass stays the bundle's: the tape's sits where the tape is.

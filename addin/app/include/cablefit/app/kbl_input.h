@@ -18,12 +18,16 @@ namespace cablefit::addin {
 /// machine into a taped bundle fill about 70-80 % of the disc; mid value, an assumption.
 inline constexpr double kBundlePackingFraction = 0.75;
 
-/// A tape wrap over a bundle (the protections of type TAPE): PVC or fabric tape 0.13 mm thick
-/// wound half-overlapped, so two layers [m], of a soft film's modulus [Pa]. Assumed values (the
-/// KBL gives the tape's part number, not its mechanics): on a 10 mm bundle the wrap adds ~6 % to
-/// the bundle's estimated EI.
+/// What a protection adds, assumed (a KBL file gives its part number, not its mechanics); the
+/// values are those of samples/materials/automotive.json, the section library. A tape wrap: PVC
+/// harness tape 0.13 mm wound half-overlapped, so two layers [m], of PVC tape film [Pa] (on a
+/// 10 mm bundle it adds ~12 % to the bundle's estimated EI).
 inline constexpr double kTapeWrapThickness = 2 * 0.13e-3;
-inline constexpr double kTapeModulus = 20e6;
+inline constexpr double kTapeModulus = 40e6;
+/// A corrugated tube over the bundle, as a smooth annulus of the library's effective PA6 values:
+/// wall 1.5 mm (NW 7-13 tubes: outer minus inner diameter ~3 mm), effective modulus [Pa].
+inline constexpr double kCorrugatedWall = 1.5e-3;
+inline constexpr double kCorrugatedModulus = 40e6;
 
 /// [m] Accuracy a KBL harness is relaxed to unless --accuracy says otherwise: a tenth of the ~1 mm
 /// a harness drawing is read to, far below the uncertainty of an estimated bundle stiffness, and
@@ -44,6 +48,11 @@ struct KblBundle {
 
 /// The bundle of the wires routed through a segment.
 KblBundle BundleOf(const std::vector<KblWire>& wires);
+
+/// A protection's kind from its Protection_type, in English or German (Band, Wellrohr,
+/// Wellschlauch, as the VDA samples are written): "tape", "corrugated tube", or "" (unknown:
+/// its stiffness is not added).
+std::string ProtectionKind(const std::string& type);
 
 /// True for the extension ".kbl" (any case).
 bool IsKblPath(const std::string& path);
