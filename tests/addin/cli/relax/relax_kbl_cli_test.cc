@@ -95,6 +95,35 @@ TEST(RelaxKblCli, SamplesRelaxEverySegmentUnderItsKblIdWithHarnessJsonOnTop) {
   EXPECT_NEAR(CableNamed(gen, "Segment_3").at("diameter").get<double>(), 0.012, 1e-12);
 }
 
+// A harness of a real vehicle's size (tools/make_kbl_harness.py): one network of 183 segments.
+TEST(RelaxKblCli, A183SegmentHarnessRelaxesEverySegmentToItsVirtualLength) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_183");
+  const auto run =
+      RunCablefit("relax " + Q(Kbl("synthetic_harness_183.kbl")) + " --out " + Q(out) + " --no-pictures --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  std::printf("%s", run.out.c_str());
+  const Json j = json::ReadJsonFile((out / "synthetic_harness_183.json").string());
+  ASSERT_EQ(j.at("cables").size(), 183u);
+  int stiffened = 0;
+  for (const Json& c : j.at("cables")) {
+    ASSERT_FALSE(c.contains("error")) << c.at("name") << ": " << c.value("error", "");
+    const double virtual_length = c.at("kbl").at("virtual_length").get<double>();
+    EXPECT_NEAR(c.at("kbl").at("relaxed_length").get<double>(), virtual_length,
+                1e-3 * virtual_length)
+        << c.at("name");
+    // Honest about its accuracy: met exactly when the estimate is within the 0.1 mm asked, and
+    // within a millimetre (a drawing's tolerance) either way.
+    const Json& solver = c.at("solver");
+    const double error = solver.at("estimated_error").get<double>();
+    EXPECT_EQ(solver.at("accuracy_met").get<bool>(), error <= 1e-4) << c.at("name");
+    EXPECT_LT(error, 1e-3) << c.at("name");
+    for (const Json& p : c.at("kbl").at("protections")) stiffened += p.at("stiffness_added").get<bool>();
+  }
+  EXPECT_EQ(stiffened, 79);  // every tape and corrugated tube
+  ASSERT_EQ(j.at("networks").size(), 1u);
+  EXPECT_EQ(j.at("networks").at(0).at("cables").size(), 183u);
+}
+
 TEST(RelaxKblCli, AnAccuracyGivenOnTheCommandLineHoldsForKblToo) {
   const fs::path out = testing::FreshTempDir("relax_kbl_accuracy");
   const auto run = RunCablefit("relax " + Q(Kbl(std::string(kGearbox) + ".kbl")) + " --out " +
