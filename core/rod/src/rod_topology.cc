@@ -88,6 +88,22 @@ void ComputeLoadCoefficients(const std::vector<Vec3>& node_force, RodModel* mode
   }
 }
 
+namespace {
+
+// True when support k's row would be compliant: every element between it and the anchor
+// stretches (the stretch it is measured over is at least part of that path).
+bool Compliant(const RodModel& model, int k) {
+  if (model.element_axial_stiffness.size() != model.num_elements || model.supports[k].contact)
+    return false;
+  bool rigid = false;
+  model.ForEachPathElementFrom(-1, model.supports[k].node, [&](int j, int) {
+    rigid = rigid || !(model.element_axial_stiffness[j] > 0);
+  });
+  return !rigid;
+}
+
+}  // namespace
+
 void AssignConstraintReferences(RodModel* model) {
   std::vector<int> fixed_at(model->num_nodes(), -1), contact_at(model->num_nodes(), -1);
   for (size_t k = 0; k < model->supports.size(); ++k) {
@@ -110,7 +126,10 @@ void AssignConstraintReferences(RodModel* model) {
     for (int n = sp.node; model->node_parent[n] >= 0;) {
       n = model->node_parent[n];
       if (n == model->anchor_node) break;
-      if (fixed_at[n] >= 0 && fixed_at[n] != static_cast<int>(k)) {
+      // A contact is never measured from a support that holds its position only up to its
+      // stretch (a compliant row): the stretch would shift the contact off the surface.
+      if (fixed_at[n] >= 0 && fixed_at[n] != static_cast<int>(k) &&
+          !(sp.contact && Compliant(*model, fixed_at[n]))) {
         sp.reference = fixed_at[n];
         break;
       }

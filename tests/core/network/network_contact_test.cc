@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "cablefit/core/network/network_simulation.h"
+#include "cablefit/core/rod/initial_shape.h"
 #include "network_test_util.h"
 
 namespace cablefit {
@@ -195,6 +196,45 @@ TEST(NetworkContact, LongCableFallsOntoAFloorAndLiesAlongIt) {
   EXPECT_GE(exact, 0.7 * inner);
   std::printf("floor: %zu contacts of %d nodes, %d rounds, %d iterations, penetration %.3g m\n",
               sol.contacts.size(), nodes, sol.contact_rounds, sol.summary.iterations, sol.max_penetration);
+}
+
+// The same fall with an extensible cable held by a clip before it reaches the floor: the clip's
+// row is compliant (it holds the node up to the stretch between it and the clamp), so the
+// contacts beyond it must not be measured from it; they were, and their stretch offset kept the
+// contact set of a harness over a panel from settling (bench contact_*).
+TEST(NetworkContact, ContactsBeyondACompliantClipSettleOnTheFloor) {
+  const double length = 1.0, d = 0.006, rho = 0.1, lift = 0.02;
+  NetworkSpec spec;
+  const Vec3 start(0, 0, d / 2 + lift);
+  MaterialSpec mat = TestMaterial(0.002, rho, d);
+  mat.axial_stiffness = 2e3;  // [N] soft, so that the stretch is not round-off
+  BranchSpec b = Cable(length, mat, StraightRoute(start, start + Vec3(length, 0, 0)));
+  SupportSpec clip = Clamp(0.2, start + Vec3(0.2, 0, 0), Vec3::UnitX());
+  clip.kind = SupportKind::kClip;
+  b.supports = {Clamp(0.0, start, Vec3::UnitX()), clip};
+  spec.branches = {b};
+  spec.obstacles.push_back({"slab", Box(Vec3(-1, -1, -0.1), Vec3(2, 1, 0))});
+  NetworkOptions opt;
+  opt.element_length = 0.005;
+  const NetworkSolution sol = SolveNetwork(spec, opt);
+  ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
+  EXPECT_LE(sol.max_penetration, 0.01 * d);
+  EXPECT_GT(sol.contacts.size(), 50u);
+  double total = 0.0;
+  for (const SupportReaction& r : sol.reactions) total += r.force.z();
+  for (const ContactLoad& c : sol.contacts) {
+    total += c.force.z();
+    EXPECT_GE(c.force.z(), -1e-12) << "contact at s=" << c.s << " pulls";
+  }
+  EXPECT_NEAR(total, rho * length * 9.81, 1e-9 * rho * length * 9.81);
+  // Lying on the floor: the held nodes' centres are a radius above it.
+  const Polyline& p = sol.branches[0];
+  for (const ContactLoad& c : sol.contacts) {
+    const Vec3 at = PointAt(p, c.s);
+    EXPECT_NEAR(at.z(), d / 2, 0.01 * d) << "contact at s=" << c.s;
+  }
+  std::printf("compliant clip: %zu contacts, %d rounds, %d iterations, penetration %.3g m\n",
+              sol.contacts.size(), sol.contact_rounds, sol.summary.iterations, sol.max_penetration);
 }
 
 // A droop between two clamps (0.3 m apart, drawn 4 mm deep) over a panel whose top lies
