@@ -119,6 +119,10 @@ void AssignConstraintReferences(RodModel* model) {
     return (a.frame.d3.cross(model->supports[j].frame.d3)).norm() < 1e-9 &&
            a.frame.d3.dot(model->supports[j].frame.d3) > 0;
   };
+  // Once per support, not per contact looking up the tree (this runs every contact round).
+  std::vector<char> compliant(model->supports.size(), 0);
+  for (size_t k = 0; k < model->supports.size(); ++k)
+    compliant[k] = Compliant(*model, static_cast<int>(k));
   for (size_t k = 0; k < model->supports.size(); ++k) {
     RodSupport& sp = model->supports[k];
     sp.reference = -1;
@@ -129,7 +133,7 @@ void AssignConstraintReferences(RodModel* model) {
       // A contact is never measured from a support that holds its position only up to its
       // stretch (a compliant row): the stretch would shift the contact off the surface.
       if (fixed_at[n] >= 0 && fixed_at[n] != static_cast<int>(k) &&
-          !(sp.contact && Compliant(*model, fixed_at[n]))) {
+          !(sp.contact && compliant[fixed_at[n]])) {
         sp.reference = fixed_at[n];
         break;
       }
