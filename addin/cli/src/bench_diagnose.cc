@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
 #include <vector>
 
 #include "cablefit/app/diagnose_case.h"
@@ -54,10 +55,13 @@ int BenchDiagnose(const std::string& dir) {
   const std::filesystem::path scratch = ScratchFolder();
   std::vector<double> shape, force;
   int index = 0;
+  // As `cablefit diagnose --jobs 1`: one case at a time, its fits on every core.
+  const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::printf("diagnose_fit_threads: %d\n", threads);
   for (const std::string& file : list.files) {
     const std::string name = std::filesystem::path(file).parent_path().filename().string();
     DiagnoseCaseOptions options;
-    options.shape.threads = 1;
+    options.shape.threads = threads;
     const auto t0 = std::chrono::steady_clock::now();
     try {
       const DiagnosedCase d = DiagnoseCase(file, options, nullptr);

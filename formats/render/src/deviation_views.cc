@@ -53,9 +53,8 @@ Image Compose(const std::vector<const Scene*>& scenes, const ViewLayout& layout,
   for (const auto& panel : layout.panels)
     jobs.push_back({scenes[static_cast<std::size_t>(panel.scene)], panel.camera});
   const std::vector<ColourScale> scales(scenes.size(), layout.colour_scale);
-  Image image = Downsample(render::RenderPanels3d(options.width, options.height, options.supersample,
-                                                  kWhite, scenes, scales, jobs, options),
-                           options.supersample);
+  Image image = render::RenderPanels3d(options.width, options.height, options.supersample, kWhite,
+                                      scenes, scales, jobs, options);
   for (const auto& panel : layout.panels) {
     const Scene& scene = *scenes[static_cast<std::size_t>(panel.scene)];
     render::DrawPanelFrame(image, panel.camera);

@@ -227,7 +227,17 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
                      const std::vector<const Scene*>& scenes, const std::vector<ColourScale>& scales,
                      const std::vector<GlPanelJob>& jobs, const RenderOptions& options) {
   const int s = supersample;
-  OffscreenContext context(width * s, height * s);
+  // One buffer the size of the largest panel, reused panel by panel: a buffer of the whole
+  // supersampled picture (7 Mpx for the diagnosis views) cost more in fresh pages than the
+  // rendering itself, and most of it would have been background.
+  int buffer_w = 1, buffer_h = 1;
+  for (const GlPanelJob& job : jobs) {
+    buffer_w = std::max(buffer_w, job.camera.width * s);
+    buffer_h = std::max(buffer_h, job.camera.height * s);
+  }
+  Image picture = Image::Filled(width, height, background);
+  if (jobs.empty()) return picture;
+  OffscreenContext context(buffer_w, buffer_h);
   const GLuint program = BuildProgram();
   std::map<const Scene*, SceneMeshes> meshes;
   std::map<const Scene*, std::vector<Eigen::Vector3d>> bounds;
@@ -236,8 +246,6 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
     bounds[scenes[k]] = DepthBounds(*scenes[k]);
   }
   glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
-  glDisable(GL_SCISSOR_TEST);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_SCISSOR_TEST);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
@@ -245,8 +253,13 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
   for (const GlPanelJob& job : jobs) {
     const Scene& scene = *job.scene;
     const SceneMeshes& m = meshes.at(job.scene);
-    SetUpCamera(job.camera, bounds.at(job.scene), s, height * s);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    // The panel is drawn at the buffer's top-left corner: shifting its rectangle and its
+    // origin together leaves the projection unchanged.
+    ViewCamera camera = job.camera;
+    camera.origin_px -= Eigen::Vector2d(camera.x, camera.y);
+    camera.x = camera.y = 0;
+    SetUpCamera(camera, bounds.at(job.scene), s, buffer_h);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // Halos first, without depth writes: the tube drawn next covers them, so only a red rim
     // around the highlighted stretch remains and the deviation colours stay untouched.
     if (!m.halos.indices.empty()) {
@@ -268,9 +281,11 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
       glColor3ub(70, 70, 70);
       DrawPoints(scene.scan_points, GL_POINTS);
     }
+    picture.Paste(Downsample(context.ReadPixels(job.camera.width * s, job.camera.height * s), s),
+                  job.camera.x, job.camera.y);
   }
   glDeleteProgram(program);
-  return context.ReadPixels();
+  return picture;
 }
 
 }  // namespace cablefit::render

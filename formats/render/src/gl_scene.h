@@ -13,8 +13,8 @@ struct GlPanelJob {
   ViewCamera camera;  // in final-picture pixels
 };
 
-/// Renders every job's panel into a picture of (width x height) x `supersample` pixels,
-/// background `background` everywhere else. `scales[k]` colours scene k's tubes; jobs refer to
+/// Renders every job's panel at `supersample` times its size, averaged down into a picture of
+/// width x height pixels, background `background` everywhere else. `scales[k]` colours scene k's tubes; jobs refer to
 /// scenes by pointer, `scenes` lists the distinct ones in the order of `scales`.
 Image RenderPanels3d(int width, int height, int supersample, Rgb background,
                      const std::vector<const Scene*>& scenes, const std::vector<ColourScale>& scales,

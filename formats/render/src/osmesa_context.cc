@@ -31,13 +31,15 @@ OffscreenContext::~OffscreenContext() {
   if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
 }
 
-Image OffscreenContext::ReadPixels() const {
+Image OffscreenContext::ReadPixels(int width, int height) const {
+  CABLEFIT_REQUIRE(width >= 0 && height >= 0 && width <= width_ && height <= height_,
+                   "read-back region larger than the off-screen buffer");
   glFinish();
-  Image image = Image::Filled(width_, height_, Rgb{});
-  for (int y = 0; y < height_; ++y) {
+  Image image = Image::Filled(width, height, Rgb{});
+  for (int y = 0; y < height; ++y) {
     const std::uint8_t* src = buffer_.data() + static_cast<std::size_t>(height_ - 1 - y) * width_ * 4;
-    std::uint8_t* dst = image.pixels.data() + static_cast<std::size_t>(y) * width_ * 3;
-    for (int x = 0; x < width_; ++x) {
+    std::uint8_t* dst = image.pixels.data() + static_cast<std::size_t>(y) * width * 3;
+    for (int x = 0; x < width; ++x) {
       dst[3 * x] = src[4 * x];
       dst[3 * x + 1] = src[4 * x + 1];
       dst[3 * x + 2] = src[4 * x + 2];

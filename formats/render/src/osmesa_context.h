@@ -22,7 +22,9 @@ class OffscreenContext {
   int width() const { return width_; }
   int height() const { return height_; }
   /// Finishes rendering and returns the buffer as an image with row 0 at the top.
-  Image ReadPixels() const;
+  Image ReadPixels() const { return ReadPixels(width_, height_); }
+  /// The same for the top-left `width` x `height` pixels of the buffer.
+  Image ReadPixels(int width, int height) const;
 
  private:
   int width_;
