@@ -1,7 +1,9 @@
-// `cablefit`: what users run. `simulate` and `section` need only the physics core and the case
-// and JSON readers, so they run here, in an executable that loads none of the CAD, mesh, scan
-// and rendering libraries (a script calling `simulate` a thousand times should not spend its
-// time in the dynamic loader: ~0.2 s and 87 libraries each otherwise). Every other command
+// `cablefit`: what users run. `simulate`, `section` and `diagnose` need only the physics core,
+// the case, JSON, PLY and CSV readers and the pictures (OSMesa is opened by the first 3-D
+// picture, not linked), so they run here, in an executable that loads none of the CAD, mesh and
+// XML libraries (a script calling `simulate` a thousand times should not spend its time in the
+// dynamic loader: ~0.1 s and 80 libraries each otherwise; a force case's diagnosis is done in
+// less). Every other command
 // line is handed, unchanged, to cablefit-full beside this executable (exec: same process, same
 // exit status, signals and time limits).
 #include <unistd.h>
@@ -29,10 +31,11 @@ std::filesystem::path FullExecutable() {
 int main(int argc, char** argv) {
   if (argc > 1) {
     const std::string command = argv[1];
-    if (command == "simulate" || command == "section") {
+    if (command == "simulate" || command == "section" || command == "diagnose") {
       return cablefit::addin::RunCommandLineWith(
           argc, argv,
-          {cablefit::addin::RegisterSimulateCommand, cablefit::addin::RegisterSectionCommand});
+          {cablefit::addin::RegisterSimulateCommand, cablefit::addin::RegisterSectionCommand,
+           cablefit::addin::RegisterDiagnoseCommand});
     }
   }
   const std::string full = FullExecutable().string();

@@ -7,28 +7,64 @@ namespace cablefit::render {
 namespace {
 
 // Per-pixel coverage over a clipped bounding box; shapes take the max, then blend once.
+// The coverage lives in one picture-sized buffer per thread that is all zeros between masks:
+// a mask records the span it touches in each row, and Blend visits and clears only those. A
+// fresh zeroed box per stroke (a plot's curves and grid lines span the whole plot) cost more in
+// clearing and page faults than the drawing. One mask at a time per thread: no drawing function
+// holds two.
 struct CoverageMask {
   int x0 = 0, y0 = 0, w = 0, h = 0;
-  std::vector<float> c;
 
-  CoverageMask(const Image& image, double xmin, double ymin, double xmax, double ymax) {
+  CoverageMask(const Image& image, double xmin, double ymin, double xmax, double ymax)
+      : store_(Store()) {
     x0 = std::max(0, static_cast<int>(std::floor(xmin)));
     y0 = std::max(0, static_cast<int>(std::floor(ymin)));
     const int x1 = std::min(image.width, static_cast<int>(std::ceil(xmax)) + 1);
     const int y1 = std::min(image.height, static_cast<int>(std::ceil(ymax)) + 1);
     w = std::max(0, x1 - x0);
     h = std::max(0, y1 - y0);
-    c.assign(static_cast<std::size_t>(w) * h, 0.0f);
+    if (store_.width != image.width || store_.height != image.height) {
+      store_.width = image.width;
+      store_.height = image.height;
+      store_.c.assign(static_cast<std::size_t>(image.width) * image.height, 0.0f);
+      store_.first.assign(static_cast<std::size_t>(image.height), image.width);
+      store_.last.assign(static_cast<std::size_t>(image.height), -1);
+    }
   }
-  float& at(int x, int y) { return c[static_cast<std::size_t>(y - y0) * w + (x - x0)]; }
+  float& at(int x, int y) {
+    int& first = store_.first[static_cast<std::size_t>(y)];
+    int& last = store_.last[static_cast<std::size_t>(y)];
+    first = std::min(first, x);
+    last = std::max(last, x);
+    return store_.c[static_cast<std::size_t>(y) * store_.width + x];
+  }
 
-  void Blend(Image& image, Rgb colour, double alpha) const {
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const float v = c[static_cast<std::size_t>(y) * w + x];
-        if (v > 0.0f) image.Blend(x0 + x, y0 + y, colour, alpha * std::min(v, 1.0f));
+  void Blend(Image& image, Rgb colour, double alpha) {
+    for (int y = y0; y < y0 + h; ++y) {
+      int& first = store_.first[static_cast<std::size_t>(y)];
+      int& last = store_.last[static_cast<std::size_t>(y)];
+      float* row = store_.c.data() + static_cast<std::size_t>(y) * store_.width;
+      for (int x = first; x <= last; ++x) {
+        const float v = row[x];
+        if (v > 0.0f) image.Blend(x, y, colour, alpha * std::min(v, 1.0f));
+        row[x] = 0.0f;
       }
+      first = store_.width;
+      last = -1;
+    }
   }
+
+ private:
+  struct Storage {
+    int width = -1, height = -1;
+    std::vector<float> c;
+    std::vector<int> first, last;  // per row: the touched columns (first > last: none)
+  };
+  static Storage& Store() {
+    static thread_local Storage storage;
+    return storage;
+  }
+  Storage& store_;
 };
 
 double DistanceToSegment(const Point2& p, const Point2& a, const Point2& b) {

@@ -1,8 +1,5 @@
-#define GL_GLEXT_PROTOTYPES 1
 #include "gl_scene.h"
 
-#include <GL/gl.h>
-#include <GL/glext.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -11,6 +8,7 @@
 #include <string>
 
 #include "cablefit/core/base/errors.h"
+#include "gl_api.h"
 #include "osmesa_context.h"
 #include "tube_mesh.h"
 
@@ -56,14 +54,14 @@ void main() {
 )";
 
 GLuint Compile(GLenum kind, const char* source) {
-  const GLuint shader = glCreateShader(kind);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
+  const GLuint shader = Gl().CreateShader(kind);
+  Gl().ShaderSource(shader, 1, &source, nullptr);
+  Gl().CompileShader(shader);
   GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  Gl().GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
     char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    Gl().GetShaderInfoLog(shader, sizeof log, nullptr, log);
     // The sources are fixed: a GL implementation that rejects them lacks a feature, so the
     // caller gets an error it can report (a picture fewer), not an abort of the host process.
     throw std::runtime_error(OneLine(std::string("shader compilation failed: ") + log));
@@ -72,12 +70,12 @@ GLuint Compile(GLenum kind, const char* source) {
 }
 
 GLuint BuildProgram() {
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, Compile(GL_VERTEX_SHADER, kVertexShader));
-  glAttachShader(program, Compile(GL_FRAGMENT_SHADER, kFragmentShader));
-  glLinkProgram(program);
+  const GLuint program = Gl().CreateProgram();
+  Gl().AttachShader(program, Compile(GL_VERTEX_SHADER, kVertexShader));
+  Gl().AttachShader(program, Compile(GL_FRAGMENT_SHADER, kFragmentShader));
+  Gl().LinkProgram(program);
   GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  Gl().GetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) throw std::runtime_error("shader program failed to link");
   return program;
 }
@@ -126,46 +124,46 @@ SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides)
 
 void DrawMesh(const TubeMesh& mesh) {
   if (mesh.indices.empty()) return;
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_NORMAL_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-  glTexCoordPointer(3, GL_FLOAT, 0, mesh.tangents.data());
-  glVertexPointer(3, GL_FLOAT, 0, mesh.positions.data());
-  glNormalPointer(GL_FLOAT, 0, mesh.normals.data());
-  glColorPointer(3, GL_FLOAT, 0, mesh.colours.data());
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.indices.size()), GL_UNSIGNED_INT,
+  Gl().EnableClientState(GL_VERTEX_ARRAY);
+  Gl().EnableClientState(GL_NORMAL_ARRAY);
+  Gl().EnableClientState(GL_COLOR_ARRAY);
+  Gl().EnableClientState(GL_TEXTURE_COORD_ARRAY);
+  Gl().TexCoordPointer(3, GL_FLOAT, 0, mesh.tangents.data());
+  Gl().VertexPointer(3, GL_FLOAT, 0, mesh.positions.data());
+  Gl().NormalPointer(GL_FLOAT, 0, mesh.normals.data());
+  Gl().ColorPointer(3, GL_FLOAT, 0, mesh.colours.data());
+  Gl().DrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.indices.size()), GL_UNSIGNED_INT,
                  mesh.indices.data());
-  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-  glDisableClientState(GL_COLOR_ARRAY);
-  glDisableClientState(GL_NORMAL_ARRAY);
-  glDisableClientState(GL_VERTEX_ARRAY);
+  Gl().DisableClientState(GL_TEXTURE_COORD_ARRAY);
+  Gl().DisableClientState(GL_COLOR_ARRAY);
+  Gl().DisableClientState(GL_NORMAL_ARRAY);
+  Gl().DisableClientState(GL_VERTEX_ARRAY);
 }
 
 // One flat colour over a mesh's triangles (positions only), blended and without depth writes:
 // what lies behind it (a cable in a clip, a tube inside its halo) stays visible.
 void DrawTranslucent(const TubeMesh& mesh, float r, float g, float b, float alpha) {
   if (mesh.indices.empty()) return;
-  glEnable(GL_BLEND);
-  glDepthMask(GL_FALSE);
-  glDisableClientState(GL_COLOR_ARRAY);
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glColor4f(r, g, b, alpha);
-  glVertexPointer(3, GL_FLOAT, 0, mesh.positions.data());
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.indices.size()), GL_UNSIGNED_INT,
+  Gl().Enable(GL_BLEND);
+  Gl().DepthMask(GL_FALSE);
+  Gl().DisableClientState(GL_COLOR_ARRAY);
+  Gl().EnableClientState(GL_VERTEX_ARRAY);
+  Gl().Color4f(r, g, b, alpha);
+  Gl().VertexPointer(3, GL_FLOAT, 0, mesh.positions.data());
+  Gl().DrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh.indices.size()), GL_UNSIGNED_INT,
                  mesh.indices.data());
-  glDisableClientState(GL_VERTEX_ARRAY);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
+  Gl().DisableClientState(GL_VERTEX_ARRAY);
+  Gl().DepthMask(GL_TRUE);
+  Gl().Disable(GL_BLEND);
 }
 
 void DrawPoints(const Eigen::Matrix3Xd& points, GLenum mode) {
   if (points.cols() == 0) return;
   const Eigen::Matrix3Xf p = points.cast<float>();
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, p.data());
-  glDrawArrays(mode, 0, static_cast<GLsizei>(p.cols()));
-  glDisableClientState(GL_VERTEX_ARRAY);
+  Gl().EnableClientState(GL_VERTEX_ARRAY);
+  Gl().VertexPointer(3, GL_FLOAT, 0, p.data());
+  Gl().DrawArrays(mode, 0, static_cast<GLsizei>(p.cols()));
+  Gl().DisableClientState(GL_VERTEX_ARRAY);
 }
 
 // Loads projection and model-view so that GL maps world points exactly where
@@ -173,9 +171,9 @@ void DrawPoints(const Eigen::Matrix3Xd& points, GLenum mode) {
 void SetUpCamera(const ViewCamera& camera, const std::vector<Eigen::Vector3d>& bounds, int supersample,
                  int buffer_height) {
   const int s = supersample;
-  glViewport(camera.x * s, buffer_height - (camera.y + camera.height) * s, camera.width * s,
+  Gl().Viewport(camera.x * s, buffer_height - (camera.y + camera.height) * s, camera.width * s,
              camera.height * s);
-  glScissor(camera.x * s, buffer_height - (camera.y + camera.height) * s, camera.width * s,
+  Gl().Scissor(camera.x * s, buffer_height - (camera.y + camera.height) * s, camera.width * s,
             camera.height * s);
   const double ppm = camera.pixels_per_metre;
   const double left = camera.centre.x() + (camera.x - camera.origin_px.x()) / ppm;
@@ -189,16 +187,16 @@ void SetUpCamera(const ViewCamera& camera, const std::vector<Eigen::Vector3d>& b
     zmax = i == 0 ? z : std::max(zmax, z);
   }
   const double margin = 0.05 * (zmax - zmin) + 1e-3;
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(left, right, bottom, top, 0.0, zmax - zmin + 2 * margin);
-  glMatrixMode(GL_MODELVIEW);
+  Gl().MatrixMode(GL_PROJECTION);
+  Gl().LoadIdentity();
+  Gl().Ortho(left, right, bottom, top, 0.0, zmax - zmin + 2 * margin);
+  Gl().MatrixMode(GL_MODELVIEW);
   double m[16] = {};  // column-major [R | t]: eye z = view z - (zmax + margin)
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) m[c * 4 + r] = camera.rotation(r, c);
   m[14] = -(zmax + margin);
   m[15] = 1.0;
-  glLoadMatrixd(m);
+  Gl().LoadMatrixd(m);
 }
 
 std::vector<Eigen::Vector3d> DepthBounds(const Scene& scene) {
@@ -245,11 +243,11 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
     meshes[scenes[k]] = BuildMeshes(*scenes[k], scales[k], options.tube_sides);
     bounds[scenes[k]] = DepthBounds(*scenes[k]);
   }
-  glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
-  glEnable(GL_SCISSOR_TEST);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  Gl().ClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
+  Gl().Enable(GL_SCISSOR_TEST);
+  Gl().Enable(GL_DEPTH_TEST);
+  Gl().DepthFunc(GL_LEQUAL);
+  Gl().BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   for (const GlPanelJob& job : jobs) {
     const Scene& scene = *job.scene;
     const SceneMeshes& m = meshes.at(job.scene);
@@ -259,32 +257,32 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
     camera.origin_px -= Eigen::Vector2d(camera.x, camera.y);
     camera.x = camera.y = 0;
     SetUpCamera(camera, bounds.at(job.scene), s, buffer_h);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    Gl().Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // Halos first, without depth writes: the tube drawn next covers them, so only a red rim
     // around the highlighted stretch remains and the deviation colours stay untouched.
     if (!m.halos.indices.empty()) {
-      glUseProgram(0);
+      Gl().UseProgram(0);
       DrawTranslucent(m.halos, 214 / 255.0f, 39 / 255.0f, 40 / 255.0f, 0.35f);
     }
-    glUseProgram(program);
+    Gl().UseProgram(program);
     DrawMesh(m.tubes);
-    glUseProgram(0);
-    glLineWidth(static_cast<float>(1.7 * s));
+    Gl().UseProgram(0);
+    Gl().LineWidth(static_cast<float>(1.7 * s));
     for (const SceneGhost& ghost : scene.ghosts) {
-      glColor3ub(ghost.colour.r, ghost.colour.g, ghost.colour.b);
+      Gl().Color3ub(ghost.colour.r, ghost.colour.g, ghost.colour.b);
       DrawPoints(ghost.points, GL_LINE_STRIP);
     }
     // Parts last, translucent and without depth writes: a cable inside a clip shows through.
     DrawTranslucent(m.solids, 0.45f, 0.47f, 0.52f, 0.22f);
     if (options.show_scan_points && scene.scan_points.cols() > 0) {
-      glPointSize(static_cast<float>(1.5 * s));
-      glColor3ub(70, 70, 70);
+      Gl().PointSize(static_cast<float>(1.5 * s));
+      Gl().Color3ub(70, 70, 70);
       DrawPoints(scene.scan_points, GL_POINTS);
     }
     picture.Paste(Downsample(context.ReadPixels(job.camera.width * s, job.camera.height * s), s),
                   job.camera.x, job.camera.y);
   }
-  glDeleteProgram(program);
+  Gl().DeleteProgram(program);
   return picture;
 }
 

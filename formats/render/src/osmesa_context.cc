@@ -1,10 +1,10 @@
 #include "osmesa_context.h"
 
-#include <GL/osmesa.h>
 
 #include <string>
 
 #include "cablefit/core/base/errors.h"
+#include "gl_api.h"
 
 namespace cablefit::render {
 
@@ -17,24 +17,24 @@ OffscreenContext::OffscreenContext(int width, int height) : width_(width), heigh
   const int attributes[] = {OSMESA_FORMAT,      OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
                             OSMESA_STENCIL_BITS, 0,          OSMESA_PROFILE,    OSMESA_COMPAT_PROFILE,
                             0};
-  OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
+  OSMesaContext context = Gl().CreateContextAttribs(attributes, nullptr);
   if (!context) throw InvalidInput("OSMesa could not create an off-screen GL context");
   buffer_.assign(static_cast<std::size_t>(width) * height * 4, 0);
-  if (!OSMesaMakeCurrent(context, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
-    OSMesaDestroyContext(context);
+  if (!Gl().MakeCurrent(context, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
+    Gl().DestroyContext(context);
     throw InvalidInput("OSMesa could not bind the off-screen buffer");
   }
   context_ = context;
 }
 
 OffscreenContext::~OffscreenContext() {
-  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+  if (context_) Gl().DestroyContext(static_cast<OSMesaContext>(context_));
 }
 
 Image OffscreenContext::ReadPixels(int width, int height) const {
   CABLEFIT_REQUIRE(width >= 0 && height >= 0 && width <= width_ && height <= height_,
                    "read-back region larger than the off-screen buffer");
-  glFinish();
+  Gl().Finish();
   Image image = Image::Filled(width, height, Rgb{});
   for (int y = 0; y < height; ++y) {
     const std::uint8_t* src = buffer_.data() + static_cast<std::size_t>(height_ - 1 - y) * width_ * 4;

@@ -1,5 +1,6 @@
-// `cablefit` starts without the CAD, mesh, scan and rendering libraries: simulate and section run
-// in it, every other command in cablefit-full, with the same results either way.
+// `cablefit` starts without the CAD, mesh, scan and 3-D rendering libraries: simulate, section and
+// diagnose run in it, every other command in cablefit-full, with the same results either way;
+// OSMesa is opened by the first 3-D picture, in either executable.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -38,11 +39,37 @@ std::string Slurp(const fs::path& p) {
 TEST(Startup, TheCommandUsersRunLoadsNoCadMeshOrRenderingLibrary) {
   const std::string needed = Output("ldd " + Q(testing::CablefitBinary()) + " 2>&1");
   ASSERT_NE(needed.find("libc.so"), std::string::npos) << needed;
-  for (const char* heavy : {"libTK", "assimp", "OSMesa", "xml2", "gmp", "png", "GL"})
+  for (const char* heavy : {"libTK", "assimp", "OSMesa", "LLVM", "xml2", "gmp", "GL"})
     EXPECT_EQ(needed.find(heavy), std::string::npos) << heavy << " in\n" << needed;
-  // The full executable has them: the split is what keeps them out, not a lighter build.
+  // The full executable has the CAD libraries: the split is what keeps them out, not a lighter
+  // build. Neither links OSMesa (and with it LLVM): it is loaded for the first 3-D picture.
   const fs::path full = fs::path(testing::CablefitBinary()).parent_path() / "cablefit-full";
-  EXPECT_NE(Output("ldd " + Q(full) + " 2>&1").find("libTK"), std::string::npos);
+  const std::string full_needed = Output("ldd " + Q(full) + " 2>&1");
+  EXPECT_NE(full_needed.find("libTK"), std::string::npos);
+  EXPECT_EQ(full_needed.find("OSMesa"), std::string::npos) << full_needed;
+}
+
+TEST(Startup, DiagnoseGivesTheSameResultInEitherExecutable) {
+  const auto out = testing::FreshTempDir("startup_diagnose");
+  const fs::path cases = testing::SourceDir() / "tests/data/cases/public";
+  const std::string inputs =
+      Q(cases / "sample-force-stiffness") + " " + Q(cases / "sample-support_contact");
+  const auto light = testing::RunCablefit("diagnose " + inputs + " --out " + Q(out / "light"));
+  ASSERT_EQ(light.exit_code, 0) << light.err;
+  const fs::path full = fs::path(testing::CablefitBinary()).parent_path() / "cablefit-full";
+  ASSERT_EQ(std::system((Q(full) + " diagnose " + inputs + " --quiet --out " + Q(out / "full") +
+                         " > /dev/null").c_str()),
+            0);
+  for (const char* file : {"sample-force-stiffness/diagnosis.json",
+                           "sample-support_contact/fitted.csv",
+                           "sample-support_contact/deviation-views.png",
+                           "sample-force-stiffness/force-curve.png"}) {
+    // The provenance (command line, date) differs by design; everything before it may not.
+    auto result = [](const std::string& text) { return text.substr(0, text.find("\"provenance\"")); };
+    const std::string a = result(Slurp(out / "light" / file));
+    EXPECT_FALSE(a.empty()) << file;
+    EXPECT_EQ(a, result(Slurp(out / "full" / file))) << file;
+  }
 }
 
 TEST(Startup, SimulateGivesTheSameResultInEitherExecutable) {
