@@ -14,7 +14,7 @@ namespace cablefit::render {
 
 #define CABLEFIT_GL_FUNCTIONS(X)                                                               \
   X(AttachShader) X(BlendFunc) X(Clear) X(ClearColor) X(Color3ub) X(Color4f) X(ColorPointer)   \
-  X(CompileShader) X(CreateProgram) X(CreateShader) X(DeleteProgram) X(DepthFunc)              \
+  X(CompileShader) X(CreateProgram) X(CreateShader) X(DepthFunc)                               \
   X(DepthMask) X(Disable) X(DisableClientState) X(DrawArrays) X(DrawElements) X(Enable)        \
   X(EnableClientState) X(Finish) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv)            \
   X(LineWidth) X(LinkProgram) X(LoadIdentity) X(LoadMatrixd) X(MatrixMode) X(NormalPointer)    \

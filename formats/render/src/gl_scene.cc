@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -78,6 +79,30 @@ GLuint BuildProgram() {
   Gl().GetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) throw std::runtime_error("shader program failed to link");
   return program;
+}
+
+// The off-screen context and shader program of this thread, kept for its next picture: making
+// them (fresh buffer pages, llvmpipe compiling the shaders) cost more than drawing a frame of a
+// motion sequence. The buffer only grows; a picture uses its top-left corner.
+struct GlSession {
+  std::unique_ptr<OffscreenContext> context;
+  GLuint program = 0;
+};
+
+GlSession& SessionFor(int width, int height) {
+  static thread_local GlSession session;
+  if (session.context && session.context->width() >= width &&
+      session.context->height() >= height) {
+    session.context->MakeCurrent();  // released after the last picture
+    return session;
+  }
+  const int w = std::max(width, session.context ? session.context->width() : 0);
+  const int h = std::max(height, session.context ? session.context->height() : 0);
+  session.context.reset();
+  session.program = 0;
+  session.context = std::make_unique<OffscreenContext>(w, h);
+  session.program = BuildProgram();
+  return session;
 }
 
 struct SceneMeshes {
@@ -235,8 +260,13 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
   }
   Image picture = Image::Filled(width, height, background);
   if (jobs.empty()) return picture;
-  OffscreenContext context(buffer_w, buffer_h);
-  const GLuint program = BuildProgram();
+  GlSession& session = SessionFor(buffer_w, buffer_h);
+  struct ReleaseOnExit {
+    ~ReleaseOnExit() { OffscreenContext::Release(); }
+  } release;
+  const OffscreenContext& context = *session.context;
+  const GLuint program = session.program;
+  buffer_h = context.height();
   std::map<const Scene*, SceneMeshes> meshes;
   std::map<const Scene*, std::vector<Eigen::Vector3d>> bounds;
   for (std::size_t k = 0; k < scenes.size(); ++k) {
@@ -282,7 +312,6 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
     picture.Paste(Downsample(context.ReadPixels(job.camera.width * s, job.camera.height * s), s),
                   job.camera.x, job.camera.y);
   }
-  Gl().DeleteProgram(program);
   return picture;
 }
 

@@ -27,6 +27,14 @@ OffscreenContext::OffscreenContext(int width, int height) : width_(width), heigh
   context_ = context;
 }
 
+void OffscreenContext::MakeCurrent() {
+  if (!Gl().MakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(), GL_UNSIGNED_BYTE,
+                        width_, height_))
+    throw InvalidInput("OSMesa could not bind the off-screen buffer");
+}
+
+void OffscreenContext::Release() { Gl().MakeCurrent(nullptr, nullptr, 0, 0, 0); }
+
 OffscreenContext::~OffscreenContext() {
   if (context_) Gl().DestroyContext(static_cast<OSMesaContext>(context_));
 }

@@ -19,6 +19,12 @@ class OffscreenContext {
   OffscreenContext(const OffscreenContext&) = delete;
   OffscreenContext& operator=(const OffscreenContext&) = delete;
 
+  /// Makes the context current again for the calling thread (after another one was).
+  void MakeCurrent();
+  /// Leaves the calling thread with no current context. A context kept current between
+  /// pictures breaks a host's own GL (FreeCAD's Qt crashed in its next GLX buffer swap).
+  static void Release();
+
   int width() const { return width_; }
   int height() const { return height_; }
   /// Finishes rendering and returns the buffer as an image with row 0 at the top.
