@@ -156,8 +156,9 @@ SweepSummary SweepRod(const RodSpec& base, const Polyline* initial, const std::v
     pose.result = std::move(r);
     if ((pose.jumped || pose.escaped_unstable) && out.branch_lost_pose < 0)
       out.branch_lost_pose = static_cast<int>(i);
-    // A jump's step is no yardstick for the next pose's.
-    if (!pose.jumped && pose.step > 0) previous_step = pose.step;
+    // A jump's step is no yardstick for the next pose's, nor is one within the solver's
+    // accuracy (a pose solved again where it already is).
+    if (!pose.jumped && pose.step > 10 * options.simulation.accuracy) previous_step = pose.step;
     current = pose.result;
     previous_q = q[i];
     out.poses.push_back(std::move(pose));
