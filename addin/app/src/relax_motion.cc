@@ -15,6 +15,7 @@
 #include "cablefit/app/report_html.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/solver/motion_sweep.h"
+#include "relax_motion_network.h"
 
 namespace cablefit::addin {
 namespace {
@@ -49,7 +50,24 @@ int SupportIndex(const CableSetup& setup, const MotionConfig::MovingSupport& ms,
 }
 
 // Pose measures from a solved pose.
-MotionPose Measure(const CableRelaxation& relaxed, const SweepPose& p, double factor) {
+Json HitJson(const MotionConfig& c, const MotionPose& p, int index, double value) {
+  return {{"pose", index}, {"q", Shown(c, p.q)}, {"value", json::NumberOrNull(value)}};
+}
+
+double LargestReaction(const MotionPose& p, int* support) {
+  double best = 0.0;
+  *support = -1;
+  for (size_t k = 0; k < p.reactions.size(); ++k)
+    if (p.reactions[k].force.norm() > best) {
+      best = p.reactions[k].force.norm();
+      *support = static_cast<int>(k);
+    }
+  return best;
+}
+
+}  // namespace
+
+MotionPose MeasurePose(const CableRelaxation& relaxed, const SweepPose& p, double factor) {
   CableRelaxation r;
   r.setup = relaxed.setup;
   r.result = p.result;
@@ -74,22 +92,6 @@ MotionPose Measure(const CableRelaxation& relaxed, const SweepPose& p, double fa
   return m;
 }
 
-Json HitJson(const MotionConfig& c, const MotionPose& p, int index, double value) {
-  return {{"pose", index}, {"q", Shown(c, p.q)}, {"value", json::NumberOrNull(value)}};
-}
-
-double LargestReaction(const MotionPose& p, int* support) {
-  double best = 0.0;
-  *support = -1;
-  for (size_t k = 0; k < p.reactions.size(); ++k)
-    if (p.reactions[k].force.norm() > best) {
-      best = p.reactions[k].force.norm();
-      *support = static_cast<int>(k);
-    }
-  return best;
-}
-
-}  // namespace
 
 void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f) {
   if (!config.motion) return;
@@ -99,6 +101,7 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
   fm.q = fm.config.Poses();
   // Which supports of which cable move.
   std::map<int, std::vector<int>> moving;  // drawing cable -> support indices
+  std::map<int, std::map<int, std::vector<int>>> network_moving;  // group -> the same
   const std::vector<OrientedBox> solid_boxes = SolidBoxes(f->drawing);
   std::vector<RelaxGroup> groups;
   try {
@@ -120,22 +123,18 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
       fm.problems.push_back(where + "cable '" + ms.cable + "' was not relaxed");
       continue;
     }
-    bool network = false;
-    for (const RelaxGroup& g : groups)
-      if (g.network() && std::count(g.cables.begin(), g.cables.end(), cable) > 0) network = true;
-    if (network) {
-      fm.problems.push_back(where + "cable '" + ms.cable +
-                            "' is solved as a network (junction or contact with a solid): its "
-                            "motion is not swept yet");
-      continue;
-    }
+    int network = -1;  // the network group the cable is solved in
+    for (size_t g = 0; g < groups.size(); ++g)
+      if (groups[g].network() &&
+          std::count(groups[g].cables.begin(), groups[g].cables.end(), cable) > 0)
+        network = static_cast<int>(g);
     std::string why;
     const int index = SupportIndex(f->cables[static_cast<size_t>(cable)]->setup, ms, &why);
     if (index < 0) {
       fm.problems.push_back(where + why);
       continue;
     }
-    std::vector<int>& list = moving[cable];
+    std::vector<int>& list = network >= 0 ? network_moving[network][cable] : moving[cable];
     if (std::find(list.begin(), list.end(), index) == list.end()) list.push_back(index);
   }
   // Sweep each cable (its own rod: the cables of a motion do not touch each other's solve).
@@ -157,7 +156,7 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
       cm.completed = s.completed;
       cm.message = s.message;
       for (const SweepPose& p : s.poses)
-        cm.poses.push_back(Measure(relaxed, p, ConfigOf(*f, config).min_bend_radius_factor));
+        cm.poses.push_back(MeasurePose(relaxed, p, ConfigOf(*f, config).min_bend_radius_factor));
     } catch (const std::exception& e) {
       cm.message = e.what();
     }
@@ -170,6 +169,23 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
     cm.seconds = std::chrono::duration<double>(Clock::now() - c0).count();
     fm.cables.push_back(std::move(cm));
   }
+  // Networks: every cable of the group moves with the supports that move.
+  for (const auto& [g, group_moving] : network_moving) {
+    const bool any_failed = std::any_of(
+        groups[static_cast<size_t>(g)].cables.begin(), groups[static_cast<size_t>(g)].cables.end(),
+        [&](int c) { return !f->cables[static_cast<size_t>(c)]; });
+    if (any_failed) {
+      fm.problems.push_back("network " + GroupLabel(f->drawing, groups[static_cast<size_t>(g)]) +
+                            ": not swept, a cable of it was not relaxed");
+      continue;
+    }
+    for (CableMotion& cm :
+         SweepNetworkGroupMotion(*f, groups[static_cast<size_t>(g)], group_moving, solid_boxes,
+                                 config, options, fm.q))
+      fm.cables.push_back(std::move(cm));
+  }
+  std::stable_sort(fm.cables.begin(), fm.cables.end(),
+                   [](const CableMotion& a, const CableMotion& b) { return a.cable < b.cable; });
   // Clearance of every swept pose to the (fixed) solids and the other cables at that pose.
   std::vector<SolidClearance> geometry;
   geometry.reserve(f->drawing.solids.size());
@@ -300,11 +316,16 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
   }
   Json moving = Json::array();
   for (int k : m.moving) moving.push_back(k);
+  Json network = nullptr;
+  if (!m.network.empty())
+    network = {{"cables", m.network},
+               {"elements", m.elements},
+               {"resolution_error", json::NumberOrNull(m.resolution_error)}};
   return {{"name", c.name},           {"moving_supports", moving},
           {"completed", m.completed}, {"message", m.message},
           {"poses", poses},           {"worst", worst},
           {"stability_lost", lost},   {"back_to_start", json::NumberOrNull(m.back_to_start)},
-          {"seconds", m.seconds}};
+          {"network", network},       {"seconds", m.seconds}};
 }
 
 Json FileMotionToJson(const FileMotion& m) {
@@ -323,7 +344,10 @@ Json FileMotionToJson(const FileMotion& m) {
             {"seconds", m.seconds},
             {"meaning",
              "the supports listed in harness.json follow the motion (the drawing is parameter 0; "
-             "solids do not move); each pose is solved from the previous one. Per cable "
+             "solids do not move); each pose is solved from the previous one; a cable solved "
+             "as a network moves with all of it ('network': its cables, the elements every pose "
+             "is solved with, and how far that resolution is from the refined relax at the "
+             "drawn pose, m). Per cable "
              "'motion': per pose min bend radius, max tension, support reactions (force on the "
              "cable, N and N m), stability of the equilibrium reached, least clearance; 'worst' "
              "the pose of each extreme; 'stability_lost' the first pose where the branch "
@@ -394,6 +418,17 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
     if (std::isfinite(cm.back_to_start)) {
       std::snprintf(buf, sizeof buf, ", back to start within %.2g m", cm.back_to_start);
       text += buf;
+    }
+    if (!cm.network.empty()) {
+      std::snprintf(buf, sizeof buf, " (swept as one network with %s, %d elements",
+                    cm.network.c_str(), cm.elements);
+      text += buf;
+      if (std::isfinite(cm.resolution_error)) {
+        std::snprintf(buf, sizeof buf, ", %.2g m from the refined relax at the drawn pose",
+                      cm.resolution_error);
+        text += buf;
+      }
+      text += ")";
     }
     if (!cm.completed) text += "; STOPPED: " + cm.message;
     std::snprintf(buf, sizeof buf, ", %.3f s", cm.seconds);

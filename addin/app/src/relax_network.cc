@@ -193,16 +193,15 @@ NetworkSimulation SimulateWithoutGravity(const NetworkSpec& spec, const NetworkO
   return SimulateNetwork(weightless, plan, opt);
 }
 
-GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,
-                                  const std::vector<OrientedBox>& boxes,
-                                  const HarnessConfig& config, const SimulationOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+NetworkSpec GroupNetworkSpec(const HarnessDrawing& drawing, const RelaxGroup& group,
+                             const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                             std::vector<CableSetup>* setups) {
   const int nb = static_cast<int>(group.cables.size());
   std::map<int, int> branch_of;
   for (int b = 0; b < nb; ++b) branch_of[group.cables[b]] = b;
   NetworkSpec spec;
   spec.name = GroupLabel(drawing, group);
-  std::vector<CableSetup> setups;
+  setups->clear();
   for (int b = 0; b < nb; ++b) {
     const int c = group.cables[b];
     JunctionEnds ends;
@@ -212,8 +211,8 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
           (e.at_start ? ends.start : ends.end) = true;
           ends.description = "solved as one network with the cables it meets at " + j.name;
         }
-    setups.push_back(SetUpCable(drawing, c, boxes, config, ends));
-    const CableSetup& su = setups.back();
+    setups->push_back(SetUpCable(drawing, c, boxes, config, ends));
+    const CableSetup& su = setups->back();
     BranchSpec br;
     br.name = su.name;
     br.length = su.spec.length;
@@ -232,6 +231,32 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
                   : spec.branches[branch_of[e.cable]].end_junction) = ji;
   }
   for (int k : group.obstacles) spec.obstacles.push_back({drawing.solids[k].name, drawing.solids[k].mesh});
+  return spec;
+}
+
+RodSolution BranchSolution(const NetworkSpec& spec, const NetworkSolution& solution, int branch) {
+  RodSolution out;
+  out.summary = solution.summary;
+  out.centerline = solution.branches[static_cast<size_t>(branch)];
+  FramesFromNodes(out.centerline, &out);
+  out.internal_force = solution.internal_force[static_cast<size_t>(branch)];
+  out.twist_angle = std::numeric_limits<double>::quiet_NaN();
+  size_t first = 0;
+  for (int k = 0; k < branch; ++k) first += spec.branches[static_cast<size_t>(k)].supports.size();
+  for (size_t k = 0; k < spec.branches[static_cast<size_t>(branch)].supports.size(); ++k)
+    out.reactions.push_back(solution.reactions[first + k]);
+  return out;
+}
+
+GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,
+                                  const std::vector<OrientedBox>& boxes,
+                                  const HarnessConfig& config, const SimulationOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int nb = static_cast<int>(group.cables.size());
+  std::map<int, int> branch_of;
+  for (int b = 0; b < nb; ++b) branch_of[group.cables[b]] = b;
+  std::vector<CableSetup> setups;
+  const NetworkSpec spec = GroupNetworkSpec(drawing, group, boxes, config, &setups);
 
   // Refined until the estimate meets the accuracy, as a single cable is (SimulateNetwork).
   double min_d = std::numeric_limits<double>::infinity();
@@ -251,15 +276,8 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
     res.converged = converged;
     res.newton_iterations = sim.newton_iterations;
     res.level_elements = sim.level_elements;
-    res.solution.summary = fine.summary;
-    res.solution.centerline = sim.centerlines[b];
-    FramesFromNodes(fine.branches[b], &res.solution);
-    res.solution.internal_force = fine.internal_force[b];
-    res.solution.twist_angle = std::numeric_limits<double>::quiet_NaN();
-    size_t first = 0;
-    for (int k = 0; k < b; ++k) first += spec.branches[k].supports.size();
-    for (size_t k = 0; k < spec.branches[b].supports.size(); ++k)
-      res.solution.reactions.push_back(fine.reactions[first + k]);
+    res.solution = BranchSolution(spec, fine, b);
+    res.solution.centerline = sim.centerlines[b];  // extrapolated; frames of the finest level
     MeasureRelaxation(config.min_bend_radius_factor, &r);
     out.cables.push_back(std::move(r));
   }

@@ -10,4 +10,9 @@ namespace cablefit::addin {
 /// sweep's figures.
 void BenchMotionSweep(const RodSpec& spec, int reps);
 
+/// The bench's synthetic branched harness (app/bench_harness.h) with the end clamp of its last
+/// trunk segment swung the same way (101 poses), swept as one network at its first relax level;
+/// prints the wall time and the sweep's figures.
+void BenchNetworkMotionSweep();
+
 }  // namespace cablefit::addin

@@ -204,6 +204,7 @@ int RunBench(const std::string& case_path, int reps) {
   BenchKblSizedNetwork();
   BenchContact(reps);
   BenchMotionSweep(spec, reps);
+  BenchNetworkMotionSweep();
   return kExitOk;
 }
 
@@ -220,8 +221,8 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   cmd->add_option("--diagnose", *diagnose_dir,
-                  "instead: time the diagnosis of every case under DIR on one thread (per case, "
-                  "median and worst)");
+                  "instead: time the diagnosis of every case under DIR, one case at a time with "
+                  "its fits on every core, as `diagnose --jobs 1` (per case, median and worst)");
   cmd->add_flag("--kbl-network", *kbl_only,
                "instead: only the KBL-sized network figures (kbl_network*)");
   cmd->callback([=] {

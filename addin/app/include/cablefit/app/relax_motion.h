@@ -5,6 +5,7 @@
 // where the followed branch is lost (snap-through).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,13 @@ struct CableMotion {
   /// [m] largest distance between the first and the last pose's centreline (there and back:
   /// 0 up to solver accuracy unless the branch was lost); NaN when not there and back.
   double back_to_start = 0.0;
+  /// Solved as one network with other cables (their names, comma separated), empty when alone.
+  /// A network's poses are solved at one resolution (`elements` in the whole network), not
+  /// refined: `resolution_error` [m] is how far that is from the refined relax at the drawn pose
+  /// (NaN when the motion does not start there).
+  std::string network;
+  int elements = 0;
+  double resolution_error = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
 };
 
@@ -63,8 +71,9 @@ struct FileMotion {
 
 struct RelaxedFile;
 
-/// Sweeps the cables `config.motion` moves. Cables solved as a network (junctions, contact)
-/// are not swept yet (a problem line says so). Does nothing without a motion.
+/// Sweeps the cables `config.motion` moves; a cable solved as a network (junctions, contact) is
+/// swept with its whole network, whose every cable then has a motion. Does nothing without a
+/// motion.
 void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f);
 
 /// The per-cable "motion" object of the relax JSON.

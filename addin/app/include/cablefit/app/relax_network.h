@@ -62,6 +62,17 @@ NetworkSimulation SimulateWithoutGravity(const NetworkSpec& spec, const NetworkO
                                          const std::vector<Polyline>& loaded,
                                          const std::vector<Eigen::Matrix3Xd>& loaded_normals = {});
 
+/// The network a group is solved as: one branch per group cable (same order), set up as
+/// SetUpCable does with the group's junction ends (`setups`, one per branch), the group's
+/// junctions and obstacles. Throws InvalidInput for an invalid set-up.
+NetworkSpec GroupNetworkSpec(const HarnessDrawing& drawing, const RelaxGroup& group,
+                             const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                             std::vector<CableSetup>* setups);
+
+/// Branch `branch` of a network solution as a single rod's solution: node centreline, element
+/// tangents (d1, d2 unknown: NaN), internal forces, the reactions of its own supports.
+RodSolution BranchSolution(const NetworkSpec& spec, const NetworkSolution& solution, int branch);
+
 /// Solves a network group from the drawn routes (two resolutions, Richardson-extrapolated).
 /// Throws InvalidInput for an invalid set-up; a solver failure is reported per cable.
 GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGroup& group,
