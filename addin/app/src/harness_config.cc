@@ -217,7 +217,8 @@ void ReadRange(const FieldReader& r, const std::string& key, double scale, doubl
 }
 
 MotionConfig ReadMotion(const FieldReader& r) {
-  RequireKnownKeys(r, {"name", "rotation", "translation", "steps", "return", "moving", "note"});
+  RequireKnownKeys(r, {"name", "rotation", "translation", "steps", "return", "moving", "solids",
+                       "note"});
   MotionConfig m;
   if (r.Has("name")) m.name = r.RequireString("name");
   if (r.Has("rotation") == r.Has("translation"))
@@ -244,8 +245,20 @@ MotionConfig ReadMotion(const FieldReader& r) {
     m.steps = static_cast<int>(v.get<long long>());
   }
   m.there_and_back = OptionalBool(r, "return", true);
-  const Json& list = r.RequireArray("moving");
-  if (list.empty()) r.Fail("moving", "must list at least one moving support");
+  if (r.Has("solids")) {
+    const Json& solids = r.RequireArray("solids");
+    for (size_t i = 0; i < solids.size(); ++i) {
+      if (!solids[i].is_string() || solids[i].get<std::string>().empty())
+        r.Fail(json::IndexKey("solids", i),
+               "must be a solid name or pattern, got " + json::Describe(solids[i]));
+      m.solids.push_back(solids[i].get<std::string>());
+    }
+  }
+  if (!r.Has("moving") && m.solids.empty())
+    r.FailHere("needs \"moving\" supports or \"solids\" that move");
+  const Json& list = r.Has("moving") ? r.RequireArray("moving") : Json::array();
+  if (list.empty() && m.solids.empty())
+    r.Fail("moving", "must list at least one moving support");
   for (size_t i = 0; i < list.size(); ++i) {
     const FieldReader e(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "moving"), i));
     RequireKnownKeys(e, {"cable", "support"});

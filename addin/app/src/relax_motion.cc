@@ -1,5 +1,7 @@
 #include "cablefit/app/relax_motion.h"
 
+#include <fnmatch.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -65,6 +67,42 @@ double LargestReaction(const MotionPose& p, int* support) {
   return best;
 }
 
+TriangleMesh MovedMesh(const TriangleMesh& mesh, const Eigen::Isometry3d& t) {
+  TriangleMesh out = mesh;
+  out.vertices = (t.linear() * mesh.vertices).colwise() + t.translation();
+  return out;
+}
+
+// The drawing's solids the motion moves (indices); a pattern matching none is a problem line.
+std::vector<int> MovingSolids(const HarnessDrawing& drawing, const MotionConfig& config,
+                              std::vector<std::string>* problems) {
+  std::vector<int> out;
+  for (size_t p = 0; p < config.solids.size(); ++p) {
+    bool any = false;
+    for (size_t k = 0; k < drawing.solids.size(); ++k)
+      if (::fnmatch(config.solids[p].c_str(), drawing.solids[k].name.c_str(), 0) == 0) {
+        any = true;
+        if (std::find(out.begin(), out.end(), static_cast<int>(k)) == out.end())
+          out.push_back(static_cast<int>(k));
+      }
+    if (!any)
+      problems->push_back("motion.solids[" + std::to_string(p) + "]: no solid '" +
+                          config.solids[p] + "' in this input");
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Support k of a cable is attached to the solid: a clip found on it, or a cable end held in it
+// (the support lies in the solid's box, as clips are found).
+bool AttachedTo(const CableSetup& setup, size_t k, const std::string& solid,
+                const OrientedBox& box) {
+  const std::string& origin = setup.support_origin[k];
+  if (origin == "clip '" + solid + "'") return true;
+  return (origin == "start" || origin == "end") && box.half_extent.prod() > 0 &&
+         box.Contains(setup.spec.supports[k].position);
+}
+
 }  // namespace
 
 MotionPose MeasurePose(const CableRelaxation& relaxed, const SweepPose& p, double factor) {
@@ -93,6 +131,30 @@ MotionPose MeasurePose(const CableRelaxation& relaxed, const SweepPose& p, doubl
 }
 
 
+namespace {
+
+// A cable nothing of the motion holds: its relaxed equilibrium at every pose.
+CableMotion HeldStill(const CableRelaxation& relaxed, int cable, const std::vector<double>& q,
+                      const HarnessConfig& config) {
+  CableMotion cm;
+  cm.cable = cable;
+  cm.name = relaxed.setup.name;
+  cm.held_still = true;
+  SweepPose p;
+  p.converged = relaxed.result.converged;
+  p.stable = relaxed.result.solution.summary.stable;
+  p.result = relaxed.result;
+  for (double x : q) {
+    p.q = x;
+    cm.poses.push_back(MeasurePose(relaxed, p, config.min_bend_radius_factor));
+  }
+  cm.completed = true;
+  cm.back_to_start = config.motion->there_and_back ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+  return cm;
+}
+
+}  // namespace
+
 void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f) {
   if (!config.motion) return;
   const auto t0 = Clock::now();
@@ -109,6 +171,16 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
   } catch (const std::exception& e) {
     fm.problems.push_back(std::string("motion: ") + e.what());
   }
+  // A support of a cable moves; a cable of a network moves with its whole group.
+  auto add_moving = [&](int cable, int index) {
+    int network = -1;
+    for (size_t g = 0; g < groups.size(); ++g)
+      if (groups[g].network() &&
+          std::count(groups[g].cables.begin(), groups[g].cables.end(), cable) > 0)
+        network = static_cast<int>(g);
+    std::vector<int>& list = network >= 0 ? network_moving[network][cable] : moving[cable];
+    if (std::find(list.begin(), list.end(), index) == list.end()) list.push_back(index);
+  };
   for (size_t k = 0; k < fm.config.supports.size(); ++k) {
     const MotionConfig::MovingSupport& ms = fm.config.supports[k];
     const std::string where = "motion.moving[" + std::to_string(k) + "]: ";
@@ -123,19 +195,25 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
       fm.problems.push_back(where + "cable '" + ms.cable + "' was not relaxed");
       continue;
     }
-    int network = -1;  // the network group the cable is solved in
-    for (size_t g = 0; g < groups.size(); ++g)
-      if (groups[g].network() &&
-          std::count(groups[g].cables.begin(), groups[g].cables.end(), cable) > 0)
-        network = static_cast<int>(g);
     std::string why;
     const int index = SupportIndex(f->cables[static_cast<size_t>(cable)]->setup, ms, &why);
     if (index < 0) {
       fm.problems.push_back(where + why);
       continue;
     }
-    std::vector<int>& list = network >= 0 ? network_moving[network][cable] : moving[cable];
-    if (std::find(list.begin(), list.end(), index) == list.end()) list.push_back(index);
+    add_moving(cable, index);
+  }
+  // Moving solids carry the supports attached to them.
+  fm.moving_solids = MovingSolids(f->drawing, fm.config, &fm.problems);
+  for (int k : fm.moving_solids) fm.moving_solid_names.push_back(f->drawing.solids[static_cast<size_t>(k)].name);
+  for (size_t c = 0; c < f->cables.size(); ++c) {
+    if (!f->cables[c]) continue;
+    const CableSetup& setup = f->cables[c]->setup;
+    for (size_t k = 0; k < setup.spec.supports.size(); ++k)
+      for (int solid : fm.moving_solids)
+        if (AttachedTo(setup, k, f->drawing.solids[static_cast<size_t>(solid)].name,
+                       solid_boxes[static_cast<size_t>(solid)]))
+          add_moving(static_cast<int>(c), static_cast<int>(k));
   }
   // Sweep each cable (its own rod: the cables of a motion do not touch each other's solve).
   SweepOptions sweep_options;
@@ -169,7 +247,13 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
     cm.seconds = std::chrono::duration<double>(Clock::now() - c0).count();
     fm.cables.push_back(std::move(cm));
   }
-  // Networks: every cable of the group moves with the supports that move.
+  // Networks: every cable of the group moves with the supports that move, and with the solids
+  // it rests on that move.
+  for (size_t g = 0; g < groups.size(); ++g)
+    for (int k : groups[g].obstacles)
+      if (groups[g].network() &&
+          std::count(fm.moving_solids.begin(), fm.moving_solids.end(), k) > 0)
+        network_moving[static_cast<int>(g)];  // swept, with or without moving supports
   for (const auto& [g, group_moving] : network_moving) {
     const bool any_failed = std::any_of(
         groups[static_cast<size_t>(g)].cables.begin(), groups[static_cast<size_t>(g)].cables.end(),
@@ -181,12 +265,23 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
     }
     for (CableMotion& cm :
          SweepNetworkGroupMotion(*f, groups[static_cast<size_t>(g)], group_moving, solid_boxes,
-                                 config, options, fm.q))
+                                 config, options, fm.q, fm.moving_solids))
       fm.cables.push_back(std::move(cm));
   }
+  // With solids moving, the cables nothing moves keep their relaxed shape at every pose: listed
+  // too, so that their clearance to the moving solids is measured pose by pose.
+  if (!fm.moving_solids.empty())
+    for (size_t c = 0; c < f->cables.size(); ++c) {
+      if (!f->cables[c] || std::any_of(fm.cables.begin(), fm.cables.end(), [&](const CableMotion& m) {
+            return m.cable == static_cast<int>(c);
+          }))
+        continue;
+      fm.cables.push_back(HeldStill(*f->cables[c], static_cast<int>(c), fm.q, config));
+    }
   std::stable_sort(fm.cables.begin(), fm.cables.end(),
                    [](const CableMotion& a, const CableMotion& b) { return a.cable < b.cable; });
-  // Clearance of every swept pose to the (fixed) solids and the other cables at that pose.
+  // Clearance of every swept pose to the solids (the moving ones where the motion has them) and
+  // the other cables at that pose.
   std::vector<SolidClearance> geometry;
   geometry.reserve(f->drawing.solids.size());
   for (const DrawnSolid& s : f->drawing.solids) geometry.emplace_back(s.mesh);
@@ -195,13 +290,22 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
     solids.push_back({f->drawing.solids[k].name, &geometry[k],
                       config.SolidMinClearance(f->drawing.solids[k].name)});
   const std::vector<OrientedBox> boxes = ClearanceBoxes(f->drawing);
-  for (CableMotion& cm : fm.cables) {
-    const CableRelaxation& relaxed = *f->cables[static_cast<size_t>(cm.cable)];
-    for (size_t i = 0; i < cm.poses.size(); ++i) {
+  for (size_t i = 0; i < fm.q.size(); ++i) {
+    // The moving solids where the motion has them at this pose.
+    std::vector<SolidClearance> moved;
+    moved.reserve(fm.moving_solids.size());
+    std::vector<ClearanceSolid> solids_here = solids;
+    for (int k : fm.moving_solids) {
+      moved.emplace_back(MovedMesh(f->drawing.solids[static_cast<size_t>(k)].mesh, mc.At(fm.q[i])));
+      solids_here[static_cast<size_t>(k)].geometry = &moved.back();
+    }
+    for (CableMotion& cm : fm.cables) {
+      if (i >= cm.poses.size()) continue;
+      const CableRelaxation& relaxed = *f->cables[static_cast<size_t>(cm.cable)];
       MotionPose& pose = cm.poses[i];
       const ClearanceCable me =
           ClearanceCableOf(relaxed, &pose.centreline, f->drawing, boxes, config);
-      std::vector<ClearancePair> pairs = MeasureClearances({me}, solids);
+      std::vector<ClearancePair> pairs = MeasureClearances({me}, solids_here);
       for (size_t j = 0; j < f->cables.size(); ++j) {
         if (!f->cables[j] || static_cast<int>(j) == cm.cable) continue;
         const Polyline* other = &f->cables[j]->relaxed;
@@ -325,7 +429,8 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
           {"completed", m.completed}, {"message", m.message},
           {"poses", poses},           {"worst", worst},
           {"stability_lost", lost},   {"back_to_start", json::NumberOrNull(m.back_to_start)},
-          {"network", network},       {"seconds", m.seconds}};
+          {"network", network},       {"held_still", m.held_still},
+          {"seconds", m.seconds}};
 }
 
 Json FileMotionToJson(const FileMotion& m) {
@@ -340,11 +445,13 @@ Json FileMotionToJson(const FileMotion& m) {
             {"parameters", q},
             {"there_and_back", m.config.there_and_back},
             {"cables", swept},
+            {"moving_solids", m.moving_solid_names},
             {"problems", m.problems},
             {"seconds", m.seconds},
             {"meaning",
-             "the supports listed in harness.json follow the motion (the drawing is parameter 0; "
-             "solids do not move); each pose is solved from the previous one; a cable solved "
+             "the supports listed in harness.json follow the motion (the drawing is parameter 0), "
+             "and so do the solids listed (moving_solids) with the supports attached to them; "
+             "other solids stay where drawn; each pose is solved from the previous one; a cable solved "
              "as a network moves with all of it ('network': its cables, the elements every pose "
              "is solved with, and how far that resolution is from the refined relax at the "
              "drawn pose, m). Per cable "
@@ -419,6 +526,7 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
       std::snprintf(buf, sizeof buf, ", back to start within %.2g m", cm.back_to_start);
       text += buf;
     }
+    if (cm.held_still) text += " (nothing holding it moves: its relaxed shape at every pose)";
     if (!cm.network.empty()) {
       std::snprintf(buf, sizeof buf, " (swept as one network with %s, %d elements",
                     cm.network.c_str(), cm.elements);

@@ -21,7 +21,8 @@ std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const Rel
                                                  const std::vector<OrientedBox>& boxes,
                                                  const HarnessConfig& config,
                                                  const SimulationOptions& options,
-                                                 const std::vector<double>& q) {
+                                                 const std::vector<double>& q,
+                                                 const std::vector<int>& moving_solids) {
   const auto t0 = std::chrono::steady_clock::now();
   const MotionConfig& mc = *config.motion;
   std::vector<CableMotion> out;
@@ -37,11 +38,14 @@ std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const Rel
   try {
     std::vector<CableSetup> setups;
     const NetworkSpec spec = GroupNetworkSpec(f.drawing, group, boxes, config, &setups);
-    std::vector<NetworkMovingSupport> supports;
+    NetworkMoving parts;
     for (size_t b = 0; b < group.cables.size(); ++b)
       for (const CableMotion& cm : out)
         if (cm.cable == group.cables[b])
-          for (int k : cm.moving) supports.push_back({static_cast<int>(b), k});
+          for (int k : cm.moving) parts.supports.push_back({static_cast<int>(b), k});
+    for (size_t k = 0; k < group.obstacles.size(); ++k)
+      if (std::count(moving_solids.begin(), moving_solids.end(), group.obstacles[k]) > 0)
+        parts.obstacles.push_back(static_cast<int>(k));
     // Every pose at one of the relax's levels, the finest within kSweepElements (a warm solve
     // costs a few Newton iterations there); how far it is from the refined relax is measured
     // at the drawn pose and reported.
@@ -55,7 +59,7 @@ std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const Rel
     }
     so.jump_floor = 10 * options.accuracy;
     const NetworkSweepSummary sweep =
-        SweepNetwork(spec, supports, [&mc](double p) { return mc.At(p); }, q, so);
+        SweepNetwork(spec, parts, [&mc](double p) { return mc.At(p); }, q, so);
     for (size_t b = 0; b < out.size(); ++b) {
       CableMotion& cm = out[b];
       const CableRelaxation& relaxed = *f.cables[static_cast<size_t>(cm.cable)];

@@ -18,13 +18,15 @@ namespace cablefit::addin {
 MotionPose MeasurePose(const CableRelaxation& relaxed, const SweepPose& p, double factor);
 
 /// Sweeps `group` of `f` through the poses `q` of `config.motion`; `moving` maps a group cable
-/// (drawing index) to the indices of its set-up's supports that move. One CableMotion per group
-/// cable, in group order; a sweep that fails says why in each of them.
+/// (drawing index) to the indices of its set-up's supports that move, `moving_solids` lists the
+/// drawing solids that move (those among the group's obstacles move in its contact). One
+/// CableMotion per group cable, in group order; a sweep that fails says why in each of them.
 std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const RelaxGroup& group,
                                                  const std::map<int, std::vector<int>>& moving,
                                                  const std::vector<OrientedBox>& boxes,
                                                  const HarnessConfig& config,
                                                  const SimulationOptions& options,
-                                                 const std::vector<double>& q);
+                                                 const std::vector<double>& q,
+                                                 const std::vector<int>& moving_solids);
 
 }  // namespace cablefit::addin

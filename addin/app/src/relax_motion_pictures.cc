@@ -94,7 +94,15 @@ MotionPictures WriteMotionAnimation(const std::string& dir, const RelaxedFile& f
       }
       scene.tubes.push_back(std::move(tube));
     }
-    for (const DrawnSolid& solid : f.drawing.solids) scene.solids.push_back({solid.name, solid.mesh});
+    for (size_t j = 0; j < f.drawing.solids.size(); ++j) {
+      const DrawnSolid& solid = f.drawing.solids[j];
+      scene.solids.push_back({solid.name, solid.mesh});
+      if (std::count(m.moving_solids.begin(), m.moving_solids.end(), static_cast<int>(j)) > 0) {
+        const Eigen::Isometry3d t = m.config.At(m.q[k]);  // where the motion has it now
+        Eigen::Matrix3Xd& v = scene.solids.back().mesh.vertices;
+        v = (t.linear() * v).colwise() + t.translation();
+      }
+    }
     frames.push_back(std::move(scene));
   }
   RenderOptions options;

@@ -90,7 +90,7 @@ void BenchNetworkMotionSweep() {
   const std::vector<double> q = ThereAndBack();
   const auto t0 = std::chrono::steady_clock::now();
   const NetworkSweepSummary sweep = SweepNetwork(
-      spec, {{branch, support}}, HingeAt(pivot), q, options);
+      spec, {{{branch, support}}, {}}, HingeAt(pivot), q, options);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double back = 0.0;

@@ -63,11 +63,17 @@ std::vector<Polyline> Bumped(const std::vector<Polyline>& branches, double fract
 
 }  // namespace
 
-NetworkSpec MovedNetworkSpec(const NetworkSpec& base,
-                             const std::vector<NetworkMovingSupport>& moving,
+NetworkSpec MovedNetworkSpec(const NetworkSpec& base, const NetworkMoving& moving,
                              const Eigen::Isometry3d& t) {
   NetworkSpec spec = base;
-  for (const NetworkMovingSupport& m : moving) {
+  for (int k : moving.obstacles) {
+    if (k < 0 || k >= static_cast<int>(spec.obstacles.size()))
+      throw InvalidInput("moving obstacle " + std::to_string(k) + " does not exist (the network has " +
+                         std::to_string(spec.obstacles.size()) + ")");
+    Eigen::Matrix3Xd& v = spec.obstacles[static_cast<size_t>(k)].mesh.vertices;
+    v = (t.linear() * v).colwise() + t.translation();
+  }
+  for (const NetworkMovingSupport& m : moving.supports) {
     if (m.branch < 0 || m.branch >= static_cast<int>(spec.branches.size()))
       throw InvalidInput("moving support: branch " + std::to_string(m.branch) +
                          " does not exist (the network has " +
@@ -95,8 +101,7 @@ bool NetworkSweepOptions::IsValid(std::string* why) const {
   return network.IsValid(why);
 }
 
-NetworkSweepSummary SweepNetwork(const NetworkSpec& base,
-                                 const std::vector<NetworkMovingSupport>& moving,
+NetworkSweepSummary SweepNetwork(const NetworkSpec& base, const NetworkMoving& moving,
                                  const std::function<Eigen::Isometry3d(double)>& motion,
                                  const std::vector<double>& q, const NetworkSweepOptions& options) {
   const auto t0 = Clock::now();

@@ -97,6 +97,22 @@ TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
       std::string::npos);
   EXPECT_NE(Error("{" + hinge + ", \"speed\": 3, " + moving + "}").find("speed"),
             std::string::npos);
+  // Solids that move: names (or patterns), and then no moving support is needed.
+  EXPECT_NE(Error("{" + hinge + "}").find("\"moving\" supports or \"solids\""),
+            std::string::npos);
+  EXPECT_NE(Error("{" + hinge + R"(, "solids": [3]})").find("motion.solids[0]"), std::string::npos);
+  EXPECT_NE(Error("{" + hinge + R"(, "solids": [""]})").find("motion.solids[0]"),
+            std::string::npos);
+  EXPECT_NE(Error("{" + hinge + R"(, "solids": "door"})").find("motion.solids"),
+            std::string::npos);
+}
+
+TEST(RelaxMotionConfig, SolidsThatMoveNeedNoMovingSupport) {
+  const HarnessConfig h = Read(
+      R"({"translation": {"direction": [0, 0, 1], "distances": [0, 0.1]}, "solids": ["seat*", "rail"]})");
+  ASSERT_TRUE(h.motion);
+  EXPECT_TRUE(h.motion->supports.empty());
+  EXPECT_EQ(h.motion->solids, (std::vector<std::string>{"seat*", "rail"}));
 }
 
 TEST(RelaxToleranceConfig, FractionsAreReadAndImpossibleOnesRefused) {

@@ -74,7 +74,7 @@ NetworkSweepOptions Options() {
 
 TEST(NetworkSweep, AHingeSwungOutAndBackReturnsTheHarnessToItsStartShape) {
   const std::vector<double> q = ThereAndBack(0.6, 6);
-  const NetworkSweepSummary sweep = SweepNetwork(YHarness(), {{2, 0}}, Hinge, q, Options());
+  const NetworkSweepSummary sweep = SweepNetwork(YHarness(), {{{2, 0}}, {}}, Hinge, q, Options());
   ASSERT_TRUE(sweep.completed) << sweep.message;
   ASSERT_EQ(sweep.poses.size(), q.size());
   EXPECT_EQ(sweep.branch_lost_pose, -1);
@@ -90,11 +90,11 @@ TEST(NetworkSweep, AHingeSwungOutAndBackReturnsTheHarnessToItsStartShape) {
 TEST(NetworkSweep, EveryPoseEqualsAColdSolveOfThatPose) {
   const NetworkSpec base = YHarness();
   const std::vector<double> q = {0.0, 0.2, 0.4, 0.6};
-  const NetworkSweepSummary sweep = SweepNetwork(base, {{2, 0}}, Hinge, q, Options());
+  const NetworkSweepSummary sweep = SweepNetwork(base, {{{2, 0}}, {}}, Hinge, q, Options());
   ASSERT_TRUE(sweep.completed) << sweep.message;
   for (size_t i = 0; i < q.size(); ++i) {
     const NetworkSolution cold =
-        SolveNetwork(MovedNetworkSpec(base, {{2, 0}}, Hinge(q[i])), Options().network);
+        SolveNetwork(MovedNetworkSpec(base, {{{2, 0}}, {}}, Hinge(q[i])), Options().network);
     ASSERT_TRUE(cold.converged()) << q[i];
     EXPECT_LT(LargestDistance(cold, sweep.poses[i].solution), 1e-8) << q[i];
   }
@@ -122,7 +122,7 @@ TEST(NetworkSweep, PushingAClampedClampedBranchLosesTheStraightBranchPastTheEule
     t.translation() = Vec3(-d, 0, 0);
     return t;
   };
-  const NetworkSweepSummary sweep = SweepNetwork(spec, {{0, 1}}, push, q, Options());
+  const NetworkSweepSummary sweep = SweepNetwork(spec, {{{0, 1}}, {}}, push, q, Options());
   ASSERT_TRUE(sweep.completed) << sweep.message;
   EXPECT_EQ(sweep.branch_lost_pose, 5);
   for (int i = 0; i < 5; ++i) {
@@ -142,8 +142,8 @@ TEST(NetworkSweep, PushingAClampedClampedBranchLosesTheStraightBranchPastTheEule
 }
 
 TEST(NetworkSweep, AMovingSupportThatDoesNotExistIsRefused) {
-  EXPECT_THROW(SweepNetwork(YHarness(), {{3, 0}}, Hinge, {0.0, 0.1}, Options()), InvalidInput);
-  EXPECT_THROW(SweepNetwork(YHarness(), {{0, 1}}, Hinge, {0.0, 0.1}, Options()), InvalidInput);
+  EXPECT_THROW(SweepNetwork(YHarness(), {{{3, 0}}, {}}, Hinge, {0.0, 0.1}, Options()), InvalidInput);
+  EXPECT_THROW(SweepNetwork(YHarness(), {{{0, 1}}, {}}, Hinge, {0.0, 0.1}, Options()), InvalidInput);
 }
 
 }  // namespace

@@ -112,6 +112,10 @@ struct MotionConfig {
     int index = -1;
   };
   std::vector<MovingSupport> supports;
+  /// Name patterns (shell globs, as in "solids") of the drawing's solids that move too: the
+  /// supports attached to them (clips found on them, cable ends held in them) move with them,
+  /// clearance is measured to them where they are at each pose, and contact follows them.
+  std::vector<std::string> solids;
   /// The rigid motion at parameter q ([rad] or [m]): maps a drawn point to its moved place.
   Eigen::Isometry3d At(double q) const;
   /// The parameters of the poses: from, ..., to (steps + 1) and, there and back, back to from.

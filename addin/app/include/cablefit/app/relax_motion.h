@@ -55,6 +55,9 @@ struct CableMotion {
   /// refined: `resolution_error` [m] is how far that is from the refined relax at the drawn pose
   /// (NaN when the motion does not start there).
   std::string network;
+  /// Nothing of the motion holds it (only solids move): its relaxed shape at every pose, listed
+  /// so that its clearance to the moving solids is measured.
+  bool held_still = false;
   int elements = 0;
   double resolution_error = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
@@ -65,6 +68,8 @@ struct FileMotion {
   MotionConfig config;
   std::vector<double> q;              ///< the pose parameters
   std::vector<CableMotion> cables;    ///< swept cables, in drawing order
+  std::vector<int> moving_solids;     ///< drawing solids that move with the motion
+  std::vector<std::string> moving_solid_names;
   std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
   double seconds = 0.0;
 };

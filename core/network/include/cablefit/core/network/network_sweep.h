@@ -24,10 +24,17 @@ struct NetworkMovingSupport {
   int support = 0;
 };
 
-/// `base` with the `moving` supports carried by the rigid motion `t` (position, tangent and
-/// normal). Throws InvalidInput for an index that does not exist.
-NetworkSpec MovedNetworkSpec(const NetworkSpec& base,
-                             const std::vector<NetworkMovingSupport>& moving,
+/// What a motion carries: supports, and obstacles (indices into NetworkSpec::obstacles: a door
+/// panel the cable rests on moves with the door).
+struct NetworkMoving {
+  std::vector<NetworkMovingSupport> supports;
+  std::vector<int> obstacles;
+};
+
+/// `base` with the `moving` supports (position, tangent and normal) and obstacles (their
+/// vertices) carried by the rigid motion `t`. Throws InvalidInput for an index that does not
+/// exist.
+NetworkSpec MovedNetworkSpec(const NetworkSpec& base, const NetworkMoving& moving,
                              const Eigen::Isometry3d& t);
 
 struct NetworkSweepOptions {
@@ -67,8 +74,7 @@ struct NetworkSweepSummary {
 /// than the sweep's own (not reported), then every pose of `q` warm from the previous one.
 /// Throws InvalidInput for an invalid spec or index; a pose that cannot be solved ends the
 /// sweep (summary.message).
-NetworkSweepSummary SweepNetwork(const NetworkSpec& base,
-                                 const std::vector<NetworkMovingSupport>& moving,
+NetworkSweepSummary SweepNetwork(const NetworkSpec& base, const NetworkMoving& moving,
                                  const std::function<Eigen::Isometry3d(double)>& motion,
                                  const std::vector<double>& q,
                                  const NetworkSweepOptions& options = {});
