@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -60,15 +61,15 @@ struct MotionPoseSummary {
   double q = 0.0;  ///< [rad] or [m] (MotionSummary::unit)
   bool converged = false, stable = false;
   bool escaped_unstable = false, jumped = false;  ///< the followed branch ended here (and how)
-  double min_bend_radius = 0.0;    ///< [m] (infinity when straight)
-  double min_bend_radius_s = 0.0;  ///< [m]
-  bool bend_flag = false;          ///< tighter than the cable's limit
-  double max_tension = 0.0;        ///< [N]
-  double max_tension_s = 0.0;      ///< [m]
+  double min_bend_radius = 0.0;                   ///< [m] (infinity when straight)
+  double min_bend_radius_s = 0.0;                 ///< [m]
+  bool bend_flag = false;                         ///< tighter than the cable's limit
+  double max_tension = 0.0;                       ///< [N]
+  double max_tension_s = 0.0;                     ///< [m]
   /// Least clearance to a solid it does not rest on or another cable at the same pose; infinity
   /// (and `clearance_to` empty) when nothing was measured.
-  double clearance = 0.0;           ///< [m]
-  double clearance_s = 0.0;         ///< [m]
+  double clearance = std::numeric_limits<double>::infinity();  ///< [m]
+  double clearance_s = 0.0;                                    ///< [m]
   double clearance_required = 0.0;  ///< [m] what harness.json asks, 0 = nothing
   std::string clearance_to;         ///< "solid 'name'" or "cable 'name'"
   Eigen::VectorXd s;                // n [m] arc length of the centreline samples
@@ -92,8 +93,8 @@ struct SweptCableSummary {
 /// The harness.json motion run on the relaxed file, as `cablefit relax` runs it.
 struct MotionSummary {
   std::string name;
-  std::string kind;  ///< "rotation" or "translation"
-  std::string unit;  ///< of q: "rad" (rotation) or "m" (translation)
+  std::string kind;                   ///< "rotation" or "translation"
+  std::string unit;                   ///< of q: "rad" (rotation) or "m" (translation)
   std::vector<double> q;              ///< the poses' parameters, in `unit`
   std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
   std::vector<SweptCableSummary> cables;
@@ -108,10 +109,10 @@ class HarnessRelaxation {
   /// Reads `input` (STEP/IGES/mesh, `mesh_unit` for meshes), reads `config_path`
   /// (harness.json, may be empty) and relaxes every cable like `cablefit relax --accuracy
   /// --timeout` (`accuracy` <= 0: the command line's default for the input, 1e-4 m for a KBL
-  /// harness and 1e-6 m otherwise): a cable (or group) taking longer than `timeout` seconds (<= 0: no limit)
-  /// fails with "timed out after N s". Then, as the command line, the clearances and, when
-  /// harness.json has a "motion", its sweep (motion()). `progress` (may be empty) gets (fraction, stage);
-  /// returning false cancels: the remaining cables fail with "cancelled". Throws
+  /// harness and 1e-6 m otherwise): a cable (or group) taking longer than `timeout` seconds (<= 0:
+  /// no limit) fails with "timed out after N s". Then, as the command line, the clearances and,
+  /// when harness.json has a "motion", its sweep (motion()). `progress` (may be empty) gets
+  /// (fraction, stage); returning false cancels: the remaining cables fail with "cancelled". Throws
   /// FileError/InvalidInput for unreadable inputs.
   static HarnessRelaxation Run(const std::string& input, const std::string& config_path,
                                double accuracy, const std::string& mesh_unit, double timeout,

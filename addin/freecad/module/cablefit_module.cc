@@ -19,8 +19,8 @@ using cablefit::freecad::DiagnosisSummary;
 using cablefit::freecad::HarnessRelaxation;
 using cablefit::freecad::MotionPoseSummary;
 using cablefit::freecad::MotionSummary;
-using cablefit::freecad::SweptCableSummary;
 using cablefit::freecad::SupportSummary;
+using cablefit::freecad::SweptCableSummary;
 
 namespace {
 
@@ -119,8 +119,8 @@ PYBIND11_MODULE(cablefit_native, m) {
       .def_readonly("stable", &MotionPoseSummary::stable)
       .def_readonly("escaped_unstable", &MotionPoseSummary::escaped_unstable)
       .def_readonly("jumped", &MotionPoseSummary::jumped)
-      .def_property_readonly("branch_lost",
-                             [](const MotionPoseSummary& p) { return p.escaped_unstable || p.jumped; })
+      .def_property_readonly(
+          "branch_lost", [](const MotionPoseSummary& p) { return p.escaped_unstable || p.jumped; })
       .def_readonly("min_bend_radius", &MotionPoseSummary::min_bend_radius)
       .def_readonly("min_bend_radius_s", &MotionPoseSummary::min_bend_radius_s)
       .def_readonly("bend_flag", &MotionPoseSummary::bend_flag)

@@ -18,7 +18,8 @@ import FreeCADGui  # noqa: E402
 import Part  # noqa: E402
 from PySide import QtCore, QtGui  # noqa: E402
 
-NAMES = ["Cablefit_RelaxFile", "Cablefit_SweepMotion", "Cablefit_MakePhysical", "Cablefit_AddSupport", "Cablefit_RelaxHarness",
+NAMES = ["Cablefit_RelaxFile", "Cablefit_SweepMotion", "Cablefit_MakePhysical",
+         "Cablefit_AddSupport", "Cablefit_RelaxHarness",
          "Cablefit_DeviationColours", "Cablefit_DiagnoseRecording", "Cablefit_ExportReport"]
 
 

@@ -436,7 +436,8 @@ def test_motion_vs_cli():
               abs(p.clearance - c["clearance"]["clearance"]) <= SAG_TOLERANCE,
               "pose %d: least clearance %.9g m to %s, CLI %s" % (k, p.clearance, p.clearance_to,
                                                                  c["clearance"]))
-    check(worst_bend <= SAG_TOLERANCE, "min bend radii differ from the CLI's by %.3g m" % worst_bend)
+    check(worst_bend <= SAG_TOLERANCE, "min bend radii differ from the CLI's by %.3g m" %
+          worst_bend)
     check(worst_shape <= SAG_TOLERANCE, "pose centrelines differ from the CLI's by %.3g m" %
           worst_shape)
     # The door moves the cable: a pose that did not follow it would pass the CLI comparison only
@@ -471,7 +472,8 @@ def test_motion_vs_cli():
           (seconds, m.seconds, worst_bend, worst_shape, back))
 
 
-TESTS = {"kbl_file": test_kbl_file, "motion_vs_cli": test_motion_vs_cli, "relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
+TESTS = {"kbl_file": test_kbl_file, "motion_vs_cli": test_motion_vs_cli,
+         "relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
          "colours": test_colours, "diagnose": test_diagnose, "report": test_report,
          "errors": test_errors, "tube_source": test_tube_source}
 

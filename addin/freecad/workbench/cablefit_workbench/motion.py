@@ -86,10 +86,8 @@ class Sweep:
 
     def describe(self, k):
         """What pose `k` is: the parameter, then per swept cable its measures, one line each."""
-        lines = ["pose %d of %d: %s %s" % (k + 1, self.pose_count, self.motion.name, self.q_text(k))]
-        for swept in self.motion.cables:
-            lines.append(_pose_line(swept, k))
-        return "\n".join(lines)
+        head = "pose %d of %d: %s %s" % (k + 1, self.pose_count, self.motion.name, self.q_text(k))
+        return "\n".join([head] + [_pose_line(swept, k) for swept in self.motion.cables])
 
 
 def _pose_line(swept, k):
