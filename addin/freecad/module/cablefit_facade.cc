@@ -1,6 +1,6 @@
-// The facade over addin/app: the same read -> group -> relax -> write sequence as
-// command_relax.cc (one input, groups in order, no worker pool: FreeCAD calls it from its GUI
-// thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
+// The facade over addin/app: the same read -> group -> relax -> clearances -> motion -> write
+// sequence as command_relax.cc (one input, groups in order, no worker pool: FreeCAD calls it from
+// its GUI thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
 #include "cablefit_facade.h"
 
 #include "cablefit/app/kbl_input.h"
@@ -18,6 +18,7 @@
 #include "cablefit/app/harness_config.h"
 #include "cablefit/app/relax_cable.h"
 #include "cablefit/app/relax_file.h"
+#include "cablefit/app/relax_motion.h"
 #include "cablefit/app/batch_pool.h"
 #include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
@@ -82,6 +83,48 @@ CableSummary Summarise(const addin::RelaxedFile& f, const addin::HarnessConfig& 
   return c;
 }
 
+MotionSummary SummariseMotion(const addin::FileMotion& m) {
+  MotionSummary out;
+  out.name = m.config.name;
+  out.kind = m.config.KindName();
+  out.unit = m.config.kind == addin::MotionConfig::Kind::kRotation ? "rad" : "m";
+  out.q = m.q;
+  out.problems = m.problems;
+  out.seconds = m.seconds;
+  for (const addin::CableMotion& cm : m.cables) {
+    SweptCableSummary c;
+    c.cable = cm.cable;
+    c.name = cm.name;
+    c.branch_lost_pose = cm.branch_lost_pose;
+    c.completed = cm.completed;
+    c.message = cm.message;
+    c.back_to_start = cm.back_to_start;
+    c.seconds = cm.seconds;
+    for (const addin::MotionPose& p : cm.poses) {
+      MotionPoseSummary ps;
+      ps.q = p.q;
+      ps.converged = p.converged;
+      ps.stable = p.stable;
+      ps.escaped_unstable = p.escaped_unstable;
+      ps.jumped = p.jumped;
+      ps.min_bend_radius = p.min_bend_radius;
+      ps.min_bend_radius_s = p.min_bend_radius_s;
+      ps.bend_flag = p.bend_flag;
+      ps.max_tension = p.max_tension;
+      ps.max_tension_s = p.max_tension_s;
+      ps.clearance = p.clearance.clearance;
+      ps.clearance_s = p.clearance.s;
+      ps.clearance_required = p.clearance_required;
+      ps.clearance_to = p.clearance_to;
+      ps.s = p.centreline.s;
+      ps.centreline = p.centreline.points;
+      c.poses.push_back(std::move(ps));
+    }
+    out.cables.push_back(std::move(c));
+  }
+  return out;
+}
+
 }  // namespace
 
 HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::string& config_path,
@@ -134,14 +177,17 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   // breakouts, or with contact against nearby solids).
   const std::vector<addin::RelaxGroup> groups = addin::GroupCables(f.drawing, boxes, config);
   const double ng = static_cast<double>(groups.size());
+  // A motion gets the last part of the bar: its poses are solves of their own.
+  const double relax_share = config.motion ? 0.8 : 1.0;
   for (size_t g = 0; g < groups.size(); ++g) {
     const addin::RelaxGroup& group = groups[g];
     const std::string label = addin::GroupLabel(f.drawing, group);
     // Continuation steps report inside the group's share of the bar.
     options.statics.progress = [&](double fraction, const std::string& stage) {
-      return !progress || progress((g + 0.1 + 0.8 * fraction) / ng, label + ": " + stage);
+      return !progress ||
+             progress(relax_share * (g + 0.1 + 0.8 * fraction) / ng, label + ": " + stage);
     };
-    if (!CancellationRequested()) report((g + 0.05) / ng, "relax " + label);
+    if (!CancellationRequested()) report(relax_share * (g + 0.05) / ng, "relax " + label);
     std::string problem;
     std::vector<addin::CableRelaxation> done;
     t0 = Clock::now();
@@ -163,11 +209,27 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
     }
     f.times.relax += Since(t0);
   }
+  // Then what the command line does per file once its cables are relaxed: clearances and the
+  // motion, with the same options (the groups' progress callback refers to this loop's state).
+  options.statics.progress = {};
+  if (!CancellationRequested()) {
+    addin::MeasureFileClearances(config, &f);
+    if (config.motion) {
+      const std::string label = "motion '" + config.motion->name + "'";
+      report(relax_share, label);
+      options.statics.progress = [&](double, const std::string& stage) {
+        // A sweep does not say how far it is: the bar stays in the motion's part.
+        return !progress || progress(relax_share + 0.5 * (1 - relax_share), label + ": " + stage);
+      };
+      addin::RunFileMotion(config, options, &f);
+    }
+  }
   if (progress) progress(1.0, CancellationRequested() ? "cancelled" : "relaxed");
 
   HarnessRelaxation out;
   out.file_ = state;
   for (size_t i = 0; i < n; ++i) out.cables_.push_back(Summarise(f, config, static_cast<int>(i)));
+  if (f.motion) out.motion_ = SummariseMotion(*f.motion);
   return out;
 }
 
@@ -190,10 +252,29 @@ void ThrowIfCablesLeftOut(const std::string& path, const std::vector<std::string
   throw FileError(path, problem);
 }
 
+// The centreline of `cable` at `pose` of the file's motion, checked: the tube of a pose is
+// swept along it exactly as the relaxed cable's tube along its relaxed centreline.
+const Polyline& PoseCentreline(const addin::RelaxedFile& f, int cable, int pose) {
+  if (!f.motion) throw InvalidInput("the harness has no motion: harness.json has no \"motion\"");
+  for (const addin::CableMotion& m : f.motion->cables) {
+    if (m.cable != cable) continue;
+    if (pose >= static_cast<int>(m.poses.size()))
+      throw InvalidInput("cable '" + m.name + "' has " + std::to_string(m.poses.size()) +
+                         " poses, not pose " + std::to_string(pose));
+    // The poses keep no material frames: a flat strip's wide axis would be the relaxed one's.
+    if (f.drawing.cables[static_cast<size_t>(cable)].flat)
+      throw InvalidInput("cable '" + m.name + "' is a flat cable: its poses are not written yet");
+    return m.poses[static_cast<size_t>(pose)].centreline;
+  }
+  throw InvalidInput("cable " + std::to_string(cable) + " is not moved by the motion");
+}
+
 }  // namespace
 
-void HarnessRelaxation::WriteStep(const std::string& path, bool with_solids, int cable) const {
+void HarnessRelaxation::WriteStep(const std::string& path, bool with_solids, int cable,
+                                  int pose) const {
   const addin::RelaxedFile& f = file_->file;
+  if (pose >= 0 && cable < 0) throw InvalidInput("a pose is written for one cable: name it");
   if (with_solids && cable < 0) {
     ThrowIfCablesLeftOut(path, addin::WriteRelaxedStepFile(path, f, file_->config));
     return;
@@ -210,6 +291,7 @@ void HarnessRelaxation::WriteStep(const std::string& path, bool with_solids, int
     part.drawing.junctions.clear();
     part.cables = {f.cables[k]};
     part.cable_errors = {f.cable_errors[k]};
+    if (pose >= 0) part.cables[0]->relaxed = PoseCentreline(f, cable, pose);
   }
   ThrowIfCablesLeftOut(path, addin::WriteRelaxedStepFile(path, part, file_->config));
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -55,6 +56,51 @@ struct CableSummary {
   double seconds = 0.0;  ///< solve wall time
 };
 
+/// One pose of a swept cable: the numbers `cablefit relax` writes into the cable's "motion".
+struct MotionPoseSummary {
+  double q = 0.0;  ///< [rad] or [m] (MotionSummary::unit)
+  bool converged = false, stable = false;
+  bool escaped_unstable = false, jumped = false;  ///< the followed branch ended here (and how)
+  double min_bend_radius = 0.0;                   ///< [m] (infinity when straight)
+  double min_bend_radius_s = 0.0;                 ///< [m]
+  bool bend_flag = false;                         ///< tighter than the cable's limit
+  double max_tension = 0.0;                       ///< [N]
+  double max_tension_s = 0.0;                     ///< [m]
+  /// Least clearance to a solid it does not rest on or another cable at the same pose; infinity
+  /// (and `clearance_to` empty) when nothing was measured.
+  double clearance = std::numeric_limits<double>::infinity();  ///< [m]
+  double clearance_s = 0.0;                                    ///< [m]
+  double clearance_required = 0.0;  ///< [m] what harness.json asks, 0 = nothing
+  std::string clearance_to;         ///< "solid 'name'" or "cable 'name'"
+  Eigen::VectorXd s;                // n [m] arc length of the centreline samples
+  Eigen::Matrix3Xd centreline;      // 3 x n [m] the cable's shape at this pose
+};
+
+/// The sweep of one cable through the motion's poses.
+struct SweptCableSummary {
+  int cable = 0;  ///< index into HarnessRelaxation::cables()
+  std::string name;
+  std::vector<MotionPoseSummary> poses;  ///< fewer than MotionSummary::q when it stopped
+  int branch_lost_pose = -1;             ///< first pose where the followed branch ended, -1 = never
+  bool completed = false;
+  std::string message;  ///< why the sweep stopped early
+  /// [m] largest distance between the first and the last pose's centreline; NaN unless the
+  /// motion goes there and back and the sweep completed.
+  double back_to_start = 0.0;
+  double seconds = 0.0;
+};
+
+/// The harness.json motion run on the relaxed file, as `cablefit relax` runs it.
+struct MotionSummary {
+  std::string name;
+  std::string kind;                   ///< "rotation" or "translation"
+  std::string unit;                   ///< of q: "rad" (rotation) or "m" (translation)
+  std::vector<double> q;              ///< the poses' parameters, in `unit`
+  std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
+  std::vector<SweptCableSummary> cables;
+  double seconds = 0.0;  ///< wall time of the sweep and its clearances
+};
+
 struct RelaxedFile;  // defined in cablefit_facade.cc
 
 /// The relaxed harness of one input file, kept so it can be exported without solving again.
@@ -63,22 +109,26 @@ class HarnessRelaxation {
   /// Reads `input` (STEP/IGES/mesh, `mesh_unit` for meshes), reads `config_path`
   /// (harness.json, may be empty) and relaxes every cable like `cablefit relax --accuracy
   /// --timeout` (`accuracy` <= 0: the command line's default for the input, 1e-4 m for a KBL
-  /// harness and 1e-6 m otherwise): a cable (or group) taking longer than `timeout` seconds (<= 0: no limit)
-  /// fails with "timed out after N s". `progress` (may be empty) gets (fraction, stage);
-  /// returning false cancels: the remaining cables fail with "cancelled". Throws
+  /// harness and 1e-6 m otherwise): a cable (or group) taking longer than `timeout` seconds (<= 0:
+  /// no limit) fails with "timed out after N s". Then, as the command line, the clearances and,
+  /// when harness.json has a "motion", its sweep (motion()). `progress` (may be empty) gets
+  /// (fraction, stage); returning false cancels: the remaining cables fail with "cancelled". Throws
   /// FileError/InvalidInput for unreadable inputs.
   static HarnessRelaxation Run(const std::string& input, const std::string& config_path,
                                double accuracy, const std::string& mesh_unit, double timeout,
                                const ProgressCallback& progress);
 
   const std::vector<CableSummary>& cables() const { return cables_; }
+  /// The harness.json motion, unset without one.
+  const std::optional<MotionSummary>& motion() const { return motion_; }
   std::vector<std::string> solid_names() const;
   double read_seconds() const;
 
   /// The relaxed tubes (failed cables as drawn) as STEP AP242 in mm, with the input's other
   /// solids when `with_solids`: the file `cablefit relax` writes when `with_solids` and
-  /// `cable` < 0, else only cable number `cable`.
-  void WriteStep(const std::string& path, bool with_solids, int cable) const;
+  /// `cable` < 0, else only cable number `cable`; with `pose` >= 0 that cable as it is at pose
+  /// `pose` of the motion (InvalidInput unless the motion swept it that far).
+  void WriteStep(const std::string& path, bool with_solids, int cable, int pose = -1) const;
   /// What `cablefit relax` writes into `dir` for this input: <stem>.json, <stem>.step,
   /// <stem>-deviation.png (unless !pictures) and report.html. Returns the report's path.
   std::string WriteReport(const std::string& dir, bool pictures) const;
@@ -86,6 +136,7 @@ class HarnessRelaxation {
  private:
   std::shared_ptr<RelaxedFile> file_;
   std::vector<CableSummary> cables_;
+  std::optional<MotionSummary> motion_;
 };
 
 /// The colour `value` gets on the scale [lo, hi] of the relax deviation pictures (viridis),

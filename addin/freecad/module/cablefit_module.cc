@@ -17,7 +17,10 @@ namespace py = pybind11;
 using cablefit::freecad::CableSummary;
 using cablefit::freecad::DiagnosisSummary;
 using cablefit::freecad::HarnessRelaxation;
+using cablefit::freecad::MotionPoseSummary;
+using cablefit::freecad::MotionSummary;
 using cablefit::freecad::SupportSummary;
+using cablefit::freecad::SweptCableSummary;
 
 namespace {
 
@@ -110,14 +113,55 @@ PYBIND11_MODULE(cablefit_native, m) {
       .def_readonly("iterations", &CableSummary::iterations)
       .def_readonly("seconds", &CableSummary::seconds);
 
+  py::class_<MotionPoseSummary>(m, "MotionPose")
+      .def_readonly("q", &MotionPoseSummary::q)
+      .def_readonly("converged", &MotionPoseSummary::converged)
+      .def_readonly("stable", &MotionPoseSummary::stable)
+      .def_readonly("escaped_unstable", &MotionPoseSummary::escaped_unstable)
+      .def_readonly("jumped", &MotionPoseSummary::jumped)
+      .def_property_readonly(
+          "branch_lost", [](const MotionPoseSummary& p) { return p.escaped_unstable || p.jumped; })
+      .def_readonly("min_bend_radius", &MotionPoseSummary::min_bend_radius)
+      .def_readonly("min_bend_radius_s", &MotionPoseSummary::min_bend_radius_s)
+      .def_readonly("bend_flag", &MotionPoseSummary::bend_flag)
+      .def_readonly("max_tension", &MotionPoseSummary::max_tension)
+      .def_readonly("max_tension_s", &MotionPoseSummary::max_tension_s)
+      .def_readonly("clearance", &MotionPoseSummary::clearance)
+      .def_readonly("clearance_s", &MotionPoseSummary::clearance_s)
+      .def_readonly("clearance_required", &MotionPoseSummary::clearance_required)
+      .def_readonly("clearance_to", &MotionPoseSummary::clearance_to)
+      .def_readonly("s", &MotionPoseSummary::s)
+      .def_readonly("centreline", &MotionPoseSummary::centreline);
+
+  py::class_<SweptCableSummary>(m, "SweptCable")
+      .def_readonly("cable", &SweptCableSummary::cable)
+      .def_readonly("name", &SweptCableSummary::name)
+      .def_readonly("poses", &SweptCableSummary::poses)
+      .def_readonly("branch_lost_pose", &SweptCableSummary::branch_lost_pose)
+      .def_readonly("completed", &SweptCableSummary::completed)
+      .def_readonly("message", &SweptCableSummary::message)
+      .def_readonly("back_to_start", &SweptCableSummary::back_to_start)
+      .def_readonly("seconds", &SweptCableSummary::seconds);
+
+  py::class_<MotionSummary>(m, "Motion")
+      .def_readonly("name", &MotionSummary::name)
+      .def_readonly("kind", &MotionSummary::kind)
+      .def_readonly("unit", &MotionSummary::unit)
+      .def_readonly("q", &MotionSummary::q)
+      .def_readonly("problems", &MotionSummary::problems)
+      .def_readonly("cables", &MotionSummary::cables)
+      .def_readonly("seconds", &MotionSummary::seconds);
+
   py::class_<HarnessRelaxation>(m, "Relaxation")
       .def_property_readonly("cables", &HarnessRelaxation::cables)
+      .def_property_readonly("motion", &HarnessRelaxation::motion,
+                             "The harness.json motion as swept (None without one)")
       .def_property_readonly("solid_names", &HarnessRelaxation::solid_names)
       .def_property_readonly("read_seconds", &HarnessRelaxation::read_seconds)
       .def("write_step", &HarnessRelaxation::WriteStep, py::arg("path"),
-           py::arg("with_solids") = true, py::arg("cable") = -1,
-           "Relaxed tubes (all, or only number `cable`) and the input's other solids (unless "
-           "with_solids is False) as STEP AP242 in mm")
+           py::arg("with_solids") = true, py::arg("cable") = -1, py::arg("pose") = -1,
+           "Relaxed tubes (all, or only number `cable`, at pose `pose` of the motion when >= 0) "
+           "and the input's other solids (unless with_solids is False) as STEP AP242 in mm")
       .def("write_report", &HarnessRelaxation::WriteReport, py::arg("dir"),
            py::arg("pictures") = true,
            "What `cablefit relax --out DIR` writes for this input; returns report.html's path");

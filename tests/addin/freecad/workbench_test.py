@@ -5,6 +5,7 @@
 # CABLEFIT_WORKBENCH_DIR, CABLEFIT_SHARED_DIR (the repository's tests/data), CABLEFIT_TEST_OUT.
 # freecadcmd prints a script's exception but exits 0: every failure ends in sys.exit(1).
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -18,7 +19,7 @@ sys.path[:0] = [ENV["CABLEFIT_WORKBENCH_DIR"], ENV["CABLEFIT_MODULE_DIR"]]
 import FreeCAD  # noqa: E402
 import Part  # noqa: E402
 
-from cablefit_workbench import cable, colours, diagnose, engine  # noqa: E402
+from cablefit_workbench import cable, colours, diagnose, engine, motion  # noqa: E402
 
 SAG_TOLERANCE = 1e-9  # [m] workbench vs CLI: the same code on the same input
 
@@ -367,7 +368,112 @@ def test_kbl_file():
     print("KBL in FreeCAD: 30 tubes, deviations as the CLI's within %.3g m" % worst)
 
 
-TESTS = {"kbl_file": test_kbl_file, "relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
+def sample_lagrange(s, points, at):
+    """`points` (3 x n, m) at arc lengths `s` (n) resampled at `at` by cubic Lagrange through the
+    four samples around each point: the rule of SampleCenterline (core/solver), by which the CLI
+    thins every pose's centreline for its JSON."""
+    import numpy
+    n = len(s)
+    out = numpy.zeros((3, len(at)))
+    for k, x in enumerate(at):
+        x = min(max(x, s[0]), s[n - 1])
+        i = min(max(int(numpy.searchsorted(s, x, side="right")) - 1, 0), n - 2)
+        lo = min(max(i - 1, 0), max(0, n - 4))
+        hi = min(n - 1, lo + 3)
+        for a in range(lo, hi + 1):
+            w = 1.0
+            for b in range(lo, hi + 1):
+                if b != a:
+                    w *= (x - s[b]) / (s[a] - s[b])
+            out[:, k] += w * points[:, a]
+    return out
+
+
+def test_motion_vs_cli():
+    """The door-hinge sample relaxed and swept in FreeCAD: the same poses, bend radii and shapes
+    as `cablefit relax --config door_hinge.json` writes, there and back to the start shape, and
+    each pose shown on the cable's object as its tube at that pose."""
+    import numpy
+    samples = os.path.normpath(os.path.join(ENV["CABLEFIT_SHARED_DIR"], "..", "..", "samples",
+                                            "harness"))
+    path = os.path.join(samples, "door_hinge.stl")
+    config = os.path.join(samples, "door_hinge.json")
+    doc = FreeCAD.newDocument("motion")
+    t0 = time.time()
+    sweep = motion.sweep_file(path, config, doc)
+    seconds = time.time() - t0
+    m = sweep.motion
+    folder = out_dir("motion_vs_cli")
+    run_cli("relax", path, "--config", config, "--out", folder, "--no-pictures", "--quiet")
+    with open(os.path.join(folder, "door_hinge.json")) as f:
+        cli = json.load(f)
+    cli_motion = cli["motion"]
+    check(m.kind == "rotation" and m.unit == "rad", "a rotation in rad: %s %s" % (m.kind, m.unit))
+    check(len(m.q) == 31 and len(m.q) == len(cli_motion["parameters"]),
+          "15 steps there and back: %d poses, CLI %d" % (len(m.q), len(cli_motion["parameters"])))
+    worst_q = max(abs(math.degrees(q) - c) for q, c in zip(m.q, cli_motion["parameters"]))
+    check(worst_q < 1e-9, "pose parameters as the CLI's within %.3g deg" % worst_q)
+    check(abs(math.degrees(m.q[15]) - 75) < 1e-9 and m.q[0] == 0 and m.q[-1] == 0,
+          "0 -> 75 -> 0 deg: %s" % [math.degrees(q) for q in m.q])
+    check(not m.problems, "no motion problems: %s" % list(m.problems))
+    check([c.name for c in m.cables] == cli_motion["cables"] == ["door_hinge#1"],
+          "the door cable is swept: %s (CLI %s)" % ([c.name for c in m.cables],
+                                                    cli_motion["cables"]))
+    swept = m.cables[0]
+    cli_cable = [c for c in cli["cables"] if c["name"] == swept.name][0]["motion"]
+    check(swept.completed and cli_cable["completed"], "sweep completed: %s" % swept.message)
+    check(len(swept.poses) == len(cli_cable["poses"]) == 31, "31 poses solved")
+    worst_bend = worst_shape = 0.0
+    for k, (p, c) in enumerate(zip(swept.poses, cli_cable["poses"])):
+        check(p.converged == c["converged"] and p.stable == c["stable"] and
+              p.branch_lost == c["branch_lost"], "pose %d: flags as the CLI's" % k)
+        worst_bend = max(worst_bend, abs(p.min_bend_radius - c["min_bend_radius"]["radius"]))
+        check(p.bend_flag == c["min_bend_radius"]["flag"], "pose %d: bend flag" % k)
+        rows = numpy.array(c["centreline"]["rows"])
+        mine = sample_lagrange(p.s, p.centreline, rows[:, 0])
+        worst_shape = max(worst_shape, float(numpy.abs(mine - rows[:, 1:].T).max()))
+        check(p.clearance_to == c["clearance"]["to"] and
+              abs(p.clearance - c["clearance"]["clearance"]) <= SAG_TOLERANCE,
+              "pose %d: least clearance %.9g m to %s, CLI %s" % (k, p.clearance, p.clearance_to,
+                                                                 c["clearance"]))
+    check(worst_bend <= SAG_TOLERANCE, "min bend radii differ from the CLI's by %.3g m" %
+          worst_bend)
+    check(worst_shape <= SAG_TOLERANCE, "pose centrelines differ from the CLI's by %.3g m" %
+          worst_shape)
+    # The door moves the cable: a pose that did not follow it would pass the CLI comparison only
+    # if the CLI did not follow either.
+    opened = float(numpy.abs(swept.poses[15].centreline - swept.poses[0].centreline).max())
+    check(opened > 0.05, "the open door moves the cable by %.3f m" % opened)
+    back = float(numpy.abs(swept.poses[-1].centreline - swept.poses[0].centreline).max())
+    check(back <= SAG_TOLERANCE and swept.back_to_start <= SAG_TOLERANCE,
+          "closed again, the cable is back at its start shape: %.3g m (back_to_start %.3g m)" %
+          (back, swept.back_to_start))
+    # Each pose on the object: the tube around that pose's centreline (mm), and not around the
+    # others' (the open door's cable leaves the closed door's tube).
+    obj = sweep.objects[0]
+    for k in (0, 15, 30):
+        t0 = time.time()
+        sweep.show(k)
+        shown = time.time() - t0
+        centre = swept.poses[k].centreline * engine.MM
+        outside = [j for j in range(0, centre.shape[1], 10)
+                   if not obj.Shape.isInside(FreeCAD.Vector(*centre[:, j]), 1e-3, True)]
+        check(not outside, "pose %d: centreline samples %s outside the shown tube" % (k, outside))
+        other = swept.poses[15 if k != 15 else 0].centreline * engine.MM
+        mid = FreeCAD.Vector(*other[:, other.shape[1] // 2])
+        check(not obj.Shape.isInside(mid, 1e-3, True), "pose %d: the tube is that pose's" % k)
+        print("pose %d shown in %.3f s: %s" % (k, shown, sweep.describe(k).replace("\n", " | ")))
+    sweep.show(15)
+    open_box = obj.Shape.BoundBox
+    sweep.restore()
+    check(obj.Shape.BoundBox.XMax != open_box.XMax, "restore puts the relaxed tube back")
+    print("motion in FreeCAD: relax + sweep %.3f s (sweep %.3f s), 31 poses; bend radii within "
+          "%.3g m, centrelines within %.3g m of the CLI's; back to start %.3g m" %
+          (seconds, m.seconds, worst_bend, worst_shape, back))
+
+
+TESTS = {"kbl_file": test_kbl_file, "motion_vs_cli": test_motion_vs_cli,
+         "relax_vs_cli": test_relax_vs_cli, "save_reload_step": test_save_reload_step,
          "colours": test_colours, "diagnose": test_diagnose, "report": test_report,
          "errors": test_errors, "tube_source": test_tube_source}
 

@@ -8,4 +8,5 @@ Non-GUI API (also used by the headless tests):
   diagnose.diagnose_recording(case_file, doc=None, report_dir="", progress=None) -> group
   engine.export_report(cables, folder, pictures=True, progress=None) -> report.html path
   engine.export_step(objects, path)
+  motion.sweep_file(path, config, doc, progress=None) -> motion.Sweep (show(pose), describe(pose))
 """

@@ -217,7 +217,59 @@ class RelaxFile:
         _guarded("Relax a harness file", run)
 
 
-COMMANDS = [("Cablefit_RelaxFile", RelaxFile()),
+class SweepMotion:
+    def GetResources(self):
+        return {"Pixmap": icon("cablefit_motion"), "MenuText": "Sweep motion",
+                "ToolTip": "Relax a harness file with a harness.json that has a \"motion\" (a "
+                           "door, a seat rail) and sweep it as `cablefit relax` does; a panel "
+                           "shows the cables at every pose (slider, Play) with bend radius, "
+                           "tension, stability and clearance"}
+
+    def IsActive(self):
+        return True
+
+    def Activated(self):
+        from PySide import QtGui
+        path, _ = QtGui.QFileDialog.getOpenFileName(
+            None, "Harness file", "",
+            "Harness files (*.step *.stp *.igs *.iges *.kbl *.stl *.obj *.ply *.gltf *.glb)")
+        if not path:
+            return
+        config, _ = QtGui.QFileDialog.getOpenFileName(
+            None, "harness.json with a motion", os.path.dirname(path), "harness.json (*.json)")
+        if config:
+            self.sweep(path, config)
+
+    def sweep(self, path, config):
+        """Everything after the file dialogs (the GUI test calls this). Returns the task panel,
+        None on failure."""
+        from . import motion, motion_panel
+        if not _has_doc():
+            FreeCAD.newDocument("Harness")
+        panels = []
+
+        def run():
+            bar = gui_progress.ProgressBar("cablefit: relax and sweep " + path)
+            try:
+                sweep = motion.sweep_file(path, config, FreeCAD.ActiveDocument, bar)
+            finally:
+                bar.close()
+            for swept in sweep.motion.cables:
+                FreeCAD.Console.PrintMessage(
+                    "cablefit: motion '%s': %s: %d poses, %s, %.3f s\n" % (
+                        sweep.motion.name, swept.name, len(swept.poses),
+                        "completed" if swept.completed else "STOPPED: " + swept.message,
+                        swept.seconds))
+            if FreeCADGui.Control.activeDialog():
+                FreeCADGui.Control.closeDialog()
+            panels.append(motion_panel.MotionPanel(sweep))
+            FreeCADGui.Control.showDialog(panels[0])
+            FreeCADGui.SendMsgToActiveView("ViewFit")
+        _guarded("Sweep motion", run)
+        return panels[0] if panels else None
+
+
+COMMANDS = [("Cablefit_RelaxFile", RelaxFile()), ("Cablefit_SweepMotion", SweepMotion()),
             ("Cablefit_MakePhysical", MakePhysical()), ("Cablefit_AddSupport", AddSupport()),
             ("Cablefit_RelaxHarness", RelaxHarness()),
             ("Cablefit_DeviationColours", DeviationColours()),

@@ -168,9 +168,7 @@ def relax(cables, progress=None, keep_folder=None):
                 raise ValueError("%s: the relax input held no cable of that name (found %s)" %
                                  (c.Label, ", ".join(r.name for r in relaxation.cables)))
             index[c.Name] = i
-            tube = os.path.join(scratch, "tube-%d.step" % i)
-            relaxation.write_step(tube, False, i)
-            store(c, relaxation.cables[i], Part.read(tube))
+            store(c, relaxation.cables[i], tube_shape(relaxation, i, scratch))
         return relaxation, index
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
@@ -197,17 +195,30 @@ def relax_file(path, doc, config="", progress=None):
             o.Status = "relaxed" if r.ok else "failed: " + r.error
             o.Diameter = r.diameter * MM
             if r.ok:
-                tube = os.path.join(scratch, "tube-%d.step" % i)
-                relaxation.write_step(tube, False, i)
-                o.Shape = Part.read(tube)
+                o.Shape = tube_shape(relaxation, i, scratch)
                 o.MaxDeviation = r.max_deviation * MM
             elif r.drawn.shape[1] >= 2:
-                o.Shape = Part.makePolygon([FreeCAD.Vector(*(MM * p)) for p in r.drawn.T])
+                o.Shape = polyline_shape(r.drawn)
             group.addObject(o)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
     doc.recompute()
     return relaxation, group
+
+
+def tube_shape(relaxation, i, folder, pose=-1):
+    """Cable `i` of `relaxation` as a FreeCAD shape (mm): its tube swept by cablefit's own STEP
+    writer, the one `cablefit relax` writes, along the relaxed centreline or, with `pose` >= 0,
+    along that pose's centreline of the motion. `folder` holds the intermediate STEP file."""
+    name = "tube-%d.step" % i if pose < 0 else "tube-%d-pose-%d.step" % (i, pose)
+    tube = os.path.join(folder, name)
+    relaxation.write_step(tube, False, i, pose)
+    return Part.read(tube)
+
+
+def polyline_shape(points):
+    """A centreline (numpy 3 x n, metres) as a FreeCAD polyline (mm): a cable with no tube."""
+    return Part.makePolygon([FreeCAD.Vector(*(MM * p)) for p in points.T])
 
 
 def store(cable, r, tube):
