@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/solver/internal/sweep_steps.h"
 
 namespace cablefit {
 namespace {
@@ -30,35 +31,6 @@ NetworkOptions Warm(NetworkOptions o, const NetworkSolution* from, bool escape) 
     o.initial_normals = from->element_normals;
   }
   return o;
-}
-
-// Leaving an unstable branch, as SweepRod does: every branch bent sideways by a half sine of
-// these fractions of its length (zero at its ends, so junctions stay joined), then solved with
-// the solver's own escape on. A symmetric saddle (a straight branch pushed past its Euler load)
-// holds the solver's small frame kicks; a bend of the order of the buckled shape's does not.
-constexpr double kEscapeBumps[] = {0.01, 0.03, 0.1};
-
-std::vector<Polyline> Bumped(const std::vector<Polyline>& branches, double fraction) {
-  std::vector<Polyline> out = branches;
-  const Vec3 fixed = Vec3(0.267, 0.534, 0.802).normalized();  // along no axis a drawing uses
-  for (Polyline& c : out) {
-    const int n = c.size();
-    if (n < 3) continue;
-    const double length = c.s[n - 1] - c.s[0];
-    if (!(length > 0)) continue;
-    const Polyline original = c;
-    for (int i = 0; i < n; ++i) {
-      const int a = std::max(0, i - 1), b = std::min(n - 1, i + 1);
-      Vec3 tangent = original.points.col(b) - original.points.col(a);
-      if (tangent.norm() == 0) continue;
-      tangent.normalize();
-      Vec3 side = fixed - fixed.dot(tangent) * tangent;
-      if (side.norm() < 1e-6) side = tangent.unitOrthogonal();
-      c.points.col(i) += fraction * length * std::sin(M_PI * (c.s[i] - c.s[0]) / length) *
-                         side.normalized();
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -133,20 +105,16 @@ NetworkSweepSummary SweepNetwork(const NetworkSpec& base, const NetworkMoving& m
     }
     return r;
   };
-  if (!q.empty() && q.front() != 0.0) {
-    double largest = 0.0;
-    for (size_t i = 1; i < q.size(); ++i) largest = std::max(largest, std::abs(q[i] - q[i - 1]));
-    const int n =
-        largest > 0 ? std::max(1, static_cast<int>(std::ceil(std::abs(q.front()) / largest))) : 1;
-    for (int k = 1; k <= n; ++k) {
-      NetworkSolution r = solve(q.front() * (k - 1) / n, q.front() * k / n);
-      if (!r.converged()) {
-        out.message = "the motion's first pose could not be reached from the drawn one: " +
-                      r.summary.message;
-        return out;
-      }
-      current = std::move(r);
+  double walked = 0.0;  // from the drawn pose to the first one (not reported)
+  for (double p : internal::ApproachSteps(q)) {
+    NetworkSolution r = solve(walked, p);
+    walked = p;
+    if (!r.converged()) {
+      out.message = "the motion's first pose could not be reached from the drawn one: " +
+                    r.summary.message;
+      return out;
     }
+    current = std::move(r);
   }
   double previous_step = 0.0;
   double previous_q = q.empty() ? 0.0 : q.front();
@@ -159,15 +127,16 @@ NetworkSweepSummary SweepNetwork(const NetworkSpec& base, const NetworkMoving& m
       break;
     }
     pose.step = LargestStep(r, current);
-    pose.jumped = i > 0 && previous_step > 0 && pose.step > options.jump_factor * previous_step &&
-                  pose.step > options.jump_floor;
+    pose.jumped = internal::Jumped(pose.step, previous_step, options.jump_factor, options.jump_floor);
     if (!r.summary.stable) {
       // The branch followed is unstable here: leave it for the nearest stable equilibrium
       // (bent starts, the solver's escape on) and follow that one from now on.
       pose.escaped_unstable = true;
-      for (double fraction : kEscapeBumps) {
+      for (double fraction : internal::kEscapeBends) {
         NetworkOptions o = Warm(options.network, nullptr, true);
-        o.initial_routes = Bumped(r.branches, fraction);
+        o.initial_routes = r.branches;  // each branch bent over its own length
+        for (Polyline& b : o.initial_routes)
+          if (b.size() > 1) b = internal::BentSideways(b, fraction * (b.s[b.size() - 1] - b.s[0]));
         NetworkSolution stable = SolveNetwork(spec_at(q[i]), o);
         out.newton_iterations += stable.summary.iterations;
         if (!stable.converged() || !stable.summary.stable) continue;

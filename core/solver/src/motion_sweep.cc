@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/solver/internal/sweep_steps.h"
 
 namespace cablefit {
 namespace {
@@ -20,30 +21,6 @@ double LargestStep(const SimulationResult& a, const SimulationResult& b, double 
   const Polyline pa = SampleCenterline(a.solution.centerline, s);
   const Polyline pb = SampleCenterline(b.solution.centerline, s);
   return (pa.points - pb.points).colwise().norm().maxCoeff();
-}
-
-// Leaving an unstable branch: the shape is bent sideways by a half sine of these fractions of
-// the length (zero at the ends), in a fixed direction normal to it, and solved again with the
-// solver's own escape on. A symmetric saddle (a straight rod pushed past its Euler load) holds
-// the solver's small frame kicks; a bend of the order of the buckled shape's does not.
-constexpr double kEscapeBumps[] = {0.01, 0.03, 0.1};
-
-Polyline Bumped(const Polyline& c, double amplitude) {
-  Polyline out = c;
-  const double length = c.s[c.size() - 1] - c.s[0];
-  // A fixed direction, not parallel to any axis a drawing is likely to use.
-  const Vec3 fixed = Vec3(0.267, 0.534, 0.802).normalized();
-  for (int i = 0; i < c.size(); ++i) {
-    const int a = std::max(0, i - 1), b = std::min(c.size() - 1, i + 1);
-    Vec3 tangent = c.points.col(b) - c.points.col(a);
-    if (tangent.norm() == 0) continue;
-    tangent.normalize();
-    Vec3 side = fixed - fixed.dot(tangent) * tangent;
-    if (side.norm() < 1e-6) side = tangent.unitOrthogonal();
-    out.points.col(i) +=
-        amplitude * std::sin(M_PI * (c.s[i] - c.s[0]) / length) * side.normalized();
-  }
-  return out;
 }
 
 SimulationOptions WithEscape(SimulationOptions o, bool escape) {
@@ -110,13 +87,10 @@ SweepSummary SweepRod(const RodSpec& base, const Polyline* initial, const std::v
     return r;
   };
   // Walk from the drawn pose to the first one (not reported).
-  if (!q.empty() && q.front() != 0.0) {
-    double largest = 0.0;
-    for (size_t i = 1; i < q.size(); ++i) largest = std::max(largest, std::abs(q[i] - q[i - 1]));
-    const int n =
-        largest > 0 ? std::max(1, static_cast<int>(std::ceil(std::abs(q.front()) / largest))) : 1;
-    for (int k = 1; k <= n && current.converged; ++k)
-      current = solve(q.front() * (k - 1) / n, q.front() * k / n);
+  double walked = 0.0;
+  for (double p : internal::ApproachSteps(q)) {
+    current = solve(walked, p);
+    walked = p;
     if (!current.converged) {
       out.message = "the motion's first pose could not be reached from the drawn one";
       return out;
@@ -134,15 +108,16 @@ SweepSummary SweepRod(const RodSpec& base, const Polyline* initial, const std::v
       break;
     }
     pose.step = LargestStep(r, current, base.length);
-    pose.jumped = i > 0 && previous_step > 0 && pose.step > options.jump_factor * previous_step &&
-                  pose.step > 10 * options.simulation.accuracy;
+    pose.jumped = internal::Jumped(pose.step, previous_step, options.jump_factor,
+                                   10 * options.simulation.accuracy);
     if (!r.solution.summary.stable) {
       // The branch followed is unstable here: leave it for the nearest stable equilibrium and
       // follow that one from now on.
       pose.escaped_unstable = true;
-      for (double amplitude : kEscapeBumps) {
+      for (double fraction : internal::kEscapeBends) {
         RodSimulator escape(WithEscape(options.simulation, true));
-        const Polyline bumped = Bumped(r.solution.centerline, amplitude * base.length);
+        const Polyline bumped =
+            internal::BentSideways(r.solution.centerline, fraction * base.length);
         const SimulationResult stable = escape.Simulate(spec_at(q[i]), &bumped);
         if (!stable.converged || !stable.solution.summary.stable) continue;
         follow = std::make_unique<RodSimulator>(WithEscape(options.simulation, false));
