@@ -5,6 +5,8 @@
 #include "cablefit/app/provenance.h"
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/swept_envelope.h"
+#include "cablefit/core/base/errors.h"
+#include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/gltf_file.h"
 #include "cablefit/formats/stl_file.h"
 
@@ -22,14 +24,20 @@ EnvelopeFiles Write(const std::string& dir, const RelaxedFile& f, const HarnessC
   out.kind = kind;
   out.stl = f.stem + "-" + kind + "-envelope.stl";
   out.glb = f.stem + "-" + kind + "-envelope.glb";
+  out.step = f.stem + "-" + kind + "-envelope.step";
   TriangleMesh all;
   std::vector<GltfMesh> meshes;
+  std::vector<std::vector<Polyline>> used;  // per cable, the shapes in its envelope
   for (const Shapes& c : cables) {
     const double radius = 0.5 * OutputDiameter(f, c.cable, config);
     EnvelopeFiles::Cable row;
     row.name = f.drawing.cables[static_cast<size_t>(c.cable)].name;
     row.shapes = static_cast<int>(c.shapes.size());
-    TriangleMesh mesh = SweptEnvelope(c.shapes, radius, EnvelopeOptions{}, &row.shapes_used);
+    std::vector<size_t> picked;
+    TriangleMesh mesh = SweptEnvelope(c.shapes, radius, EnvelopeOptions{}, &picked);
+    row.shapes_used = static_cast<int>(picked.size());
+    used.emplace_back();
+    for (size_t i : picked) used.back().push_back(c.shapes[i]);
     row.triangles = static_cast<long>(mesh.faces.cols());
     AppendMesh(mesh, &all);
     meshes.push_back({row.name, std::move(mesh)});
@@ -39,6 +47,25 @@ EnvelopeFiles Write(const std::string& dir, const RelaxedFile& f, const HarnessC
   // Binary STL headers must not start with "solid".
   WriteStl((folder / out.stl).string(), all, "cablefit " + kind + " envelope of " + f.stem);
   WriteGlb((folder / out.glb).string(), meshes, ToolVersion());
+  // For CAD the envelope as exact solids: per cable the tube of every shape the mesh used,
+  // swept along its centreline as the relaxed tubes are (a faceted copy of the mesh was ~2 kB
+  // of STEP per triangle: 28 MB for the door sample).
+  HarnessDrawing tubes_only;
+  tubes_only.cables = f.drawing.cables;
+  std::vector<RelaxedCable> tubes;
+  for (size_t k = 0; k < cables.size(); ++k)
+    for (const Polyline& shape : used[k])
+      tubes.push_back({cables[k].cable, shape, OutputDiameter(f, cables[k].cable, config)});
+  std::vector<std::string> skipped;
+  try {
+    WriteRelaxedStep((folder / out.step).string(), tubes_only, tubes, &skipped);
+  } catch (const InvalidInput& e) {
+    skipped.push_back(e.what());
+  }
+  if (!skipped.empty()) {
+    out.step_problem = skipped.front();
+    if (!std::filesystem::exists(folder / out.step)) out.step.clear();
+  }
   return out;
 }
 
@@ -47,7 +74,7 @@ EnvelopeFiles Write(const std::string& dir, const RelaxedFile& f, const HarnessC
 std::vector<std::string> EnvelopeFileNames(const std::string& stem) {
   std::vector<std::string> names;
   for (const char* kind : {"motion", "tolerance"})
-    for (const char* ext : {".stl", ".glb"})
+    for (const char* ext : {".stl", ".glb", ".step"})
       names.push_back(stem + "-" + kind + "-envelope" + ext);
   return names;
 }
@@ -94,6 +121,8 @@ json::Json EnvelopeFilesToJson(const std::vector<EnvelopeFiles>& files) {
         {{"kind", e.kind},
          {"stl", e.stl},
          {"glb", e.glb},
+         {"step", e.step.empty() ? json::Json(nullptr) : json::Json(e.step)},
+         {"step_problem", e.step_problem.empty() ? json::Json(nullptr) : json::Json(e.step_problem)},
          {"cables", cables},
          {"construction",
           e.kind == "motion"

@@ -67,7 +67,7 @@ TriangleMesh TubeSurface(const Eigen::Matrix3Xd& input, double radius, int sides
 }
 
 TriangleMesh SweptEnvelope(const std::vector<Polyline>& shapes, double radius,
-                           const EnvelopeOptions& options, int* used) {
+                           const EnvelopeOptions& options, std::vector<size_t>* used) {
   CABLEFIT_REQUIRE(options.max_shapes >= 2 && options.min_rings >= 2 &&
                        options.max_rings >= options.min_rings,
                    "invalid EnvelopeOptions");
@@ -82,6 +82,7 @@ TriangleMesh SweptEnvelope(const std::vector<Polyline>& shapes, double radius,
   }
   TriangleMesh out;
   std::vector<Polyline> taken;
+  if (used) used->clear();
   for (size_t i : pick) {
     const Polyline& shape = shapes[i];
     if (shape.size() < 2) continue;
@@ -99,8 +100,8 @@ TriangleMesh SweptEnvelope(const std::vector<Polyline>& shapes, double radius,
     if (repeat) continue;
     AppendMesh(TubeSurface(sampled.points, radius, options.sides), &out);
     taken.push_back(std::move(sampled));
+    if (used) used->push_back(i);
   }
-  if (used) *used = static_cast<int>(taken.size());
   return out;
 }
 

@@ -61,9 +61,10 @@ TEST(SweptEnvelope, EnclosesTheTubeOfEveryPose) {
     poses.push_back(Arc(0.6 * j / steps));
   }
   const double r = 0.008;
-  int used = 0;
+  std::vector<size_t> used;
   const TriangleMesh env = SweptEnvelope(poses, r, EnvelopeOptions{}, &used);
-  EXPECT_EQ(used, steps + 1);  // the way back repeats the way there
+  ASSERT_EQ(used.size(), static_cast<size_t>(steps + 1));  // the way back repeats the way there
+  for (size_t k = 0; k < used.size(); ++k) EXPECT_EQ(used[k], k);
   for (const Polyline& pose : poses) {
     for (int i = 1; i + 1 < pose.size(); i += 4)
       EXPECT_GE(WindingNumber(env, pose.points.col(i)), 1.0 - 1e-6);
@@ -80,9 +81,11 @@ TEST(SweptEnvelope, ManyShapesAreThinnedEvenlyKeepingTheLast) {
   for (int k = 0; k < 50; ++k) poses.push_back(Arc(0.01 * k, 20));
   EnvelopeOptions options;
   options.max_shapes = 10;
-  int used = 0;
+  std::vector<size_t> used;
   const TriangleMesh env = SweptEnvelope(poses, 0.005, options, &used);
-  EXPECT_EQ(used, 10);
+  ASSERT_EQ(used.size(), 10u);
+  EXPECT_EQ(used.front(), 0u);               // first and last kept
+  EXPECT_EQ(used.back(), poses.size() - 1);
   EXPECT_GE(WindingNumber(env, poses.back().points.col(10)), 1.0 - 1e-6);
 }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "cablefit/app/swept_envelope.h"
+#include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/formats/stl_file.h"
 #include "cli_runner.h"
@@ -107,6 +108,26 @@ TEST(RelaxEnvelopeCli, TheEnvelopesHoldEveryPoseAndEveryCorner) {
   for (const Json& v : doc["bufferViews"])
     views += v["byteLength"].get<size_t>();
   EXPECT_EQ(views, bin_length);
+
+  // STEP: one swept tube per shape in the mesh, which cablefit's own reader recovers as cables
+  // ending where the poses end.
+  ASSERT_TRUE(motion["step"].is_string()) << motion.dump();
+  const HarnessDrawing back = ReadCadFile((out / motion["step"].get<std::string>()).string());
+  EXPECT_EQ(back.cables.size(), row["shapes_used"].get<size_t>());
+  EXPECT_TRUE(back.solids.empty());
+  for (const DrawnCable& c : back.cables) {
+    EXPECT_EQ(c.name.rfind(cable["name"].get<std::string>(), 0), 0u) << c.name;
+    const Vec3 a = c.centreline.points.col(0), b = c.centreline.points.rightCols<1>();
+    double best = 1e9;
+    for (const Json& pose : cable["motion"]["poses"]) {
+      const Json& rows = pose["centreline"]["rows"];
+      const Vec3 p0 = Point(rows.front(), 1), p1 = Point(rows.back(), 1);
+      best = std::min(best, std::min(std::max((a - p0).norm(), (b - p1).norm()),
+                                     std::max((a - p1).norm(), (b - p0).norm())));
+    }
+    EXPECT_LT(best, 1e-4) << c.name;  // within a tenth of a millimetre of a pose's ends
+  }
+  EXPECT_TRUE(tolerance["step"].is_string());
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The envelope files of one relaxed input: per cable the swept envelope (swept_envelope.h) of
-// its motion poses and of its tolerance set-ups, written as <stem>-motion-envelope.{stl,glb}
-// and <stem>-tolerance-envelope.{stl,glb} (one STL with every cable's envelope, one glTF with a
-// named mesh per cable).
+// its motion poses and of its tolerance set-ups, written as <stem>-motion-envelope.{stl,glb,step}
+// and <stem>-tolerance-envelope.{stl,glb,step} (one STL with every cable's envelope, one glTF with a
+// named mesh per cable, one STEP with a named, coloured body per cable).
 #pragma once
 
 #include <string>
@@ -16,6 +16,9 @@ namespace cablefit::addin {
 struct EnvelopeFiles {
   std::string kind;      ///< "motion" or "tolerance"
   std::string stl, glb;  ///< file names next to the other outputs
+  /// The same as STEP (per cable a compound of its pose tubes as solids), or empty with the
+  /// reason in `step_problem` when OCCT could not make it.
+  std::string step, step_problem;
   struct Cable {
     std::string name;
     int shapes = 0;         ///< poses or set-ups solved (converged)

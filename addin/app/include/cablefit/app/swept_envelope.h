@@ -32,9 +32,9 @@ struct EnvelopeOptions {
 TriangleMesh TubeSurface(const Eigen::Matrix3Xd& points, double radius, int sides);
 
 /// The envelope of a cable of `radius` [m] over `shapes` (centrelines with arc length; all of
-/// the same cable). `used` (optional) gets the number of shapes that went into the mesh.
+/// the same cable). `used` (optional) gets the indices of the shapes that went into the mesh.
 TriangleMesh SweptEnvelope(const std::vector<Polyline>& shapes, double radius,
-                           const EnvelopeOptions& options, int* used = nullptr);
+                           const EnvelopeOptions& options, std::vector<size_t>* used = nullptr);
 
 /// Generalised winding number of `mesh` at `p` (sum of the triangles' signed solid angles over
 /// 4 pi; A. Van Oosterom, J. Strackee, IEEE Trans. Biomed. Eng. 30(2), 1983): for a union of
