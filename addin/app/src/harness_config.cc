@@ -218,7 +218,7 @@ void ReadRange(const FieldReader& r, const std::string& key, double scale, doubl
 
 MotionConfig ReadMotion(const FieldReader& r) {
   RequireKnownKeys(r, {"name", "rotation", "translation", "steps", "return", "moving", "solids",
-                       "note"});
+                       "track", "note"});
   MotionConfig m;
   if (r.Has("name")) m.name = r.RequireString("name");
   if (r.Has("rotation") == r.Has("translation"))
@@ -252,6 +252,18 @@ MotionConfig ReadMotion(const FieldReader& r) {
         r.Fail(json::IndexKey("solids", i),
                "must be a solid name or pattern, got " + json::Describe(solids[i]));
       m.solids.push_back(solids[i].get<std::string>());
+    }
+  }
+  if (r.Has("track")) {
+    const Json& list = r.RequireArray("track");
+    for (size_t i = 0; i < list.size(); ++i) {
+      const FieldReader e(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "track"), i));
+      RequireKnownKeys(e, {"cable", "s"});
+      MotionConfig::TrackedPoint t;
+      t.cable = e.RequireString("cable");
+      t.s = e.RequireNumber("s");
+      if (!(t.s >= 0) || !std::isfinite(t.s)) e.Fail("s", "must be a finite arc length >= 0 [m]");
+      m.tracks.push_back(t);
     }
   }
   if (!r.Has("moving") && m.solids.empty())

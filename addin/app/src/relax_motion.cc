@@ -153,6 +153,30 @@ CableMotion HeldStill(const CableRelaxation& relaxed, int cable, const std::vect
   return cm;
 }
 
+// Where arc length `s` of a swept cable is at every pose.
+MotionTrack TrackPoint(const CableMotion& cm, const MotionConfig::TrackedPoint& tp) {
+  MotionTrack t;
+  t.cable = tp.cable;
+  const Polyline& first = cm.poses.front().centreline;
+  t.s = std::clamp(tp.s, first.s[0], first.s[first.size() - 1]);
+  t.points.resize(3, static_cast<Eigen::Index>(cm.poses.size()));
+  Eigen::VectorXd at(1);
+  at[0] = t.s;
+  for (size_t i = 0; i < cm.poses.size(); ++i) {
+    t.points.col(static_cast<Eigen::Index>(i)) =
+        SampleCenterline(cm.poses[i].centreline, at).points.col(0);
+    if (i == 0) continue;
+    const Eigen::Index k = static_cast<Eigen::Index>(i);
+    t.travel += (t.points.col(k) - t.points.col(k - 1)).norm();
+    const double d = (t.points.col(k) - t.points.col(0)).norm();
+    if (d > t.excursion) {
+      t.excursion = d;
+      t.excursion_pose = static_cast<int>(i);
+    }
+  }
+  return t;
+}
+
 }  // namespace
 
 void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options, RelaxedFile* f) {
@@ -324,6 +348,19 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
       }
     }
   }
+  // The tracked points' paths.
+  for (size_t k = 0; k < fm.config.tracks.size(); ++k) {
+    const MotionConfig::TrackedPoint& tp = fm.config.tracks[k];
+    const CableMotion* swept = nullptr;
+    for (const CableMotion& cm : fm.cables)
+      if (cm.name == tp.cable) swept = &cm;
+    if (!swept || swept->poses.empty()) {
+      fm.problems.push_back("motion.track[" + std::to_string(k) + "]: cable '" + tp.cable +
+                            "' is not moved by this motion (or not in this input)");
+      continue;
+    }
+    fm.tracks.push_back(TrackPoint(*swept, tp));
+  }
   fm.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   f->motion = std::move(fm);
 }
@@ -433,6 +470,27 @@ Json CableMotionToJson(const CableMotion& m, const MotionConfig& c) {
           {"seconds", m.seconds}};
 }
 
+namespace {
+
+Json TracksJson(const FileMotion& m) {
+  Json out = Json::array();
+  for (const MotionTrack& t : m.tracks) {
+    Json points = Json::array();
+    for (Eigen::Index k = 0; k < t.points.cols(); ++k) points.push_back(json::ToJson(Vec3(t.points.col(k))));
+    out.push_back({{"cable", t.cable},
+                   {"s", t.s},
+                   {"points", points},
+                   {"travel", t.travel},
+                   {"excursion",
+                    {{"distance", t.excursion},
+                     {"pose", t.excursion_pose},
+                     {"q", Shown(m.config, m.q[static_cast<size_t>(t.excursion_pose)])}}}});
+  }
+  return out;
+}
+
+}  // namespace
+
 Json FileMotionToJson(const FileMotion& m) {
   Json q = Json::array();
   for (double x : m.q) q.push_back(Shown(m.config, x));
@@ -446,6 +504,7 @@ Json FileMotionToJson(const FileMotion& m) {
             {"there_and_back", m.config.there_and_back},
             {"cables", swept},
             {"moving_solids", m.moving_solid_names},
+            {"tracks", TracksJson(m)},
             {"problems", m.problems},
             {"seconds", m.seconds},
             {"meaning",
@@ -454,7 +513,8 @@ Json FileMotionToJson(const FileMotion& m) {
              "other solids stay where drawn; each pose is solved from the previous one; a cable solved "
              "as a network moves with all of it ('network': its cables, the elements every pose "
              "is solved with, and how far that resolution is from the refined relax at the "
-             "drawn pose, m). Per cable "
+             "drawn pose, m); 'tracks': the path of each tracked point (its place at every pose, "
+             "the length travelled, the farthest it gets from its first place). Per cable "
              "'motion': per pose min bend radius, max tension, support reactions (force on the "
              "cable, N and N m), stability of the equilibrium reached, least clearance; 'worst' "
              "the pose of each extreme; 'stability_lost' the first pose where the branch "
@@ -541,6 +601,16 @@ std::vector<std::string> MotionLines(const FileMotion& m) {
     if (!cm.completed) text += "; STOPPED: " + cm.message;
     std::snprintf(buf, sizeof buf, ", %.3f s", cm.seconds);
     lines.push_back(text + buf);
+  }
+  for (const MotionTrack& t : m.tracks) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "motion '%s': %s at s=%.0f mm moves up to %.1f mm from its first place (pose "
+                  "%d, %g %s), travelling %.1f mm",
+                  c.name.c_str(), t.cable.c_str(), 1e3 * t.s, 1e3 * t.excursion, t.excursion_pose,
+                  Shown(c, m.q[static_cast<size_t>(t.excursion_pose)]), ShownUnit(c),
+                  1e3 * t.travel);
+    lines.push_back(buf);
   }
   for (const std::string& p : m.problems) lines.push_back("motion '" + c.name + "': " + p);
   return lines;

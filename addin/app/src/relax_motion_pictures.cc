@@ -94,6 +94,11 @@ MotionPictures WriteMotionAnimation(const std::string& dir, const RelaxedFile& f
       }
       scene.tubes.push_back(std::move(tube));
     }
+    // The tracked points' whole paths, so a frame shows where the point has been and goes.
+    for (const MotionTrack& t : m.tracks)
+      scene.ghosts.push_back({"path of " + t.cable + " s=" + std::to_string(static_cast<int>(
+                                                                std::lround(1e3 * t.s))) + " mm",
+                              t.points, {214, 95, 14}});
     for (size_t j = 0; j < f.drawing.solids.size(); ++j) {
       const DrawnSolid& solid = f.drawing.solids[j];
       scene.solids.push_back({solid.name, solid.mesh});

@@ -105,6 +105,13 @@ TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
             std::string::npos);
   EXPECT_NE(Error("{" + hinge + R"(, "solids": "door"})").find("motion.solids"),
             std::string::npos);
+  // Tracked points: a cable and an arc length.
+  EXPECT_NE(Error("{" + hinge + ", " + moving + R"(, "track": [{"cable": "c", "s": -1}]})")
+                .find("motion.track[0].s"),
+            std::string::npos);
+  EXPECT_NE(Error("{" + hinge + ", " + moving + R"(, "track": [{"s": 0.1}]})")
+                .find("motion.track[0].cable"),
+            std::string::npos);
 }
 
 TEST(RelaxMotionConfig, SolidsThatMoveNeedNoMovingSupport) {

@@ -5,6 +5,8 @@
 // line.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -75,6 +77,37 @@ TEST(RelaxMotionSolidsCli, ALiftedSolidComesCloserByExactlyTheLift) {
     EXPECT_EQ(m["poses"][k]["centreline"], m["poses"][0]["centreline"]) << k;
   }
   EXPECT_EQ(m["worst"]["min_clearance"]["pose"].get<int>(), 5);
+}
+
+TEST(RelaxMotionSolidsCli, ATrackedPointOnTheDoorRunsOnACircleAboutTheHinge) {
+  const fs::path dir = testing::FreshTempDir("relax_motion_track");
+  const Json j = Relax(dir, "track", [](Json* c) {
+    // The cable's end (an arc length past its end is taken as the end), held in the door.
+    (*c)["motion"]["track"] = {{{"cable", "door_hinge#1"}, {"s", 10.0}},
+                               {{"cable", "no-such-cable"}, {"s", 0.1}}};
+  });
+  const Json& motion = j["motion"];
+  ASSERT_EQ(motion["tracks"].size(), 1u);
+  ASSERT_EQ(motion["problems"].size(), 1u);
+  EXPECT_NE(motion["problems"][0].get<std::string>().find("no-such-cable"), std::string::npos);
+  const Json& t = motion["tracks"][0];
+  ASSERT_EQ(t["points"].size(), 31u);
+  // The door turns 75 degrees about the vertical axis through (0.30, -0.03) in 5-degree steps,
+  // there and back: the end runs on a circle about it (up to the clamp's give, about 1 um).
+  const Eigen::Vector2d axis(0.30, -0.03);
+  const auto at = [&](size_t k) {
+    const Json& p = t["points"][k];
+    return Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  };
+  const double r = (at(0).head<2>() - axis).norm();
+  for (size_t k = 0; k < 31; ++k) {
+    EXPECT_NEAR((at(k).head<2>() - axis).norm(), r, 1e-5) << k;
+    EXPECT_NEAR(at(k).z(), at(0).z(), 1e-5) << k;
+  }
+  const double step = 5 * M_PI / 180;
+  EXPECT_NEAR(t["excursion"]["distance"].get<double>(), 2 * r * std::sin(75 * M_PI / 360), 2e-5);
+  EXPECT_EQ(t["excursion"]["pose"].get<int>(), 15);
+  EXPECT_NEAR(t["travel"].get<double>(), 30 * 2 * r * std::sin(step / 2), 1e-4);
 }
 
 }  // namespace

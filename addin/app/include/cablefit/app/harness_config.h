@@ -116,6 +116,12 @@ struct MotionConfig {
   /// supports attached to them (clips found on them, cable ends held in them) move with them,
   /// clearance is measured to them where they are at each pose, and contact follows them.
   std::vector<std::string> solids;
+  /// Points of cables whose path over the motion is reported ("track": cable and arc length).
+  struct TrackedPoint {
+    std::string cable;
+    double s = 0.0;  ///< [m] along the cable
+  };
+  std::vector<TrackedPoint> tracks;
   /// The rigid motion at parameter q ([rad] or [m]): maps a drawn point to its moved place.
   Eigen::Isometry3d At(double q) const;
   /// The parameters of the poses: from, ..., to (steps + 1) and, there and back, back to from.

@@ -63,6 +63,16 @@ struct CableMotion {
   double seconds = 0.0;
 };
 
+/// The path of one tracked point of a cable over the motion.
+struct MotionTrack {
+  std::string cable;
+  double s = 0.0;            ///< [m] along the cable (clamped to its length)
+  Eigen::Matrix3Xd points;   ///< 3 x poses [m] where the point is at each pose
+  double travel = 0.0;       ///< [m] length of the path (pose to pose)
+  double excursion = 0.0;    ///< [m] farthest distance from its place at the first pose
+  int excursion_pose = 0;
+};
+
 /// The motion of one input.
 struct FileMotion {
   MotionConfig config;
@@ -70,6 +80,7 @@ struct FileMotion {
   std::vector<CableMotion> cables;    ///< swept cables, in drawing order
   std::vector<int> moving_solids;     ///< drawing solids that move with the motion
   std::vector<std::string> moving_solid_names;
+  std::vector<MotionTrack> tracks;    ///< the motion's tracked points, in its order
   std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
   double seconds = 0.0;
 };
