@@ -23,6 +23,18 @@
 namespace cablefit {
 namespace {
 
+// Lexicographic order of points with coordinates closer than `tolerance` [m] taken as equal:
+// a route's direction and the order of a component's routes (their names) must not follow
+// round-off, which differs between builds of the skeleton (an -O1 build named the branches of
+// the branched-tubes sample the other way round).
+bool CanonicalBefore(const Vec3& a, const Vec3& b, double tolerance) {
+  for (int k = 0; k < 3; ++k) {
+    if (a[k] < b[k] - tolerance) return true;
+    if (a[k] > b[k] + tolerance) return false;
+  }
+  return false;
+}
+
 // A cross-section is a circle when its RMS residual is below this fraction of the radius; a
 // faceted tube of 12 sides stays below it (its edges sag at most 3.4 % inside the circle), a
 // square section does not (~8 %).
@@ -332,10 +344,7 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
         tube.diameter = 2 * radius;
         tube.fit_error = std::sqrt(std::accumulate(residuals.begin(), residuals.end(), 0.0) /
                                    static_cast<double>(residuals.size()));
-        const Vec3 a = pts.front(), b = pts.back();
-        if (std::lexicographical_compare(b.data(), b.data() + 3, a.data(), a.data() + 3)) {
-          std::reverse(pts.begin(), pts.end());
-        }
+        if (CanonicalBefore(pts.back(), pts.front(), 0.1 * r0)) std::reverse(pts.begin(), pts.end());
         tube.centreline.points.resize(3, static_cast<Eigen::Index>(pts.size()));
         for (size_t i = 0; i < pts.size(); ++i) tube.centreline.points.col(static_cast<Eigen::Index>(i)) = pts[i];
         tube.centreline.ParameteriseByChords(0.0);
@@ -349,6 +358,14 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
     }
   }
   if (tubes.empty()) throw InvalidInput("component " + std::to_string(component) + " is not a tube");
+  // Named in this order (<name>#k): by where they start, not by the skeleton's node numbering.
+  std::stable_sort(tubes.begin(), tubes.end(), [&](const MeshTube& a, const MeshTube& b) {
+    const Vec3 a0 = a.centreline.points.col(0), b0 = b.centreline.points.col(0);
+    if (CanonicalBefore(a0, b0, 0.1 * r0)) return true;
+    if (CanonicalBefore(b0, a0, 0.1 * r0)) return false;
+    return CanonicalBefore(a.centreline.points.rightCols<1>(), b.centreline.points.rightCols<1>(),
+                           0.1 * r0);
+  });
   return tubes;
 }
 
