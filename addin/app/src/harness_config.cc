@@ -216,14 +216,49 @@ void ReadRange(const FieldReader& r, const std::string& key, double scale, doubl
   m->to = scale * to;
 }
 
+// One listed pose: a rotation (about `axis` through `point` by `angle` degrees), then a
+// translation [m]; at least one of them.
+Eigen::Isometry3d ReadPose(const FieldReader& r) {
+  RequireKnownKeys(r, {"rotation", "translation", "note"});
+  if (!r.Has("rotation") && !r.Has("translation"))
+    r.FailHere("needs a \"rotation\", a \"translation\" or both");
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  if (r.Has("rotation")) {
+    const FieldReader rot = r.Child("rotation");
+    RequireKnownKeys(rot, {"axis", "point", "angle", "note"});
+    const Vec3 axis = RequireDirection(rot, "axis");
+    const Vec3 point = rot.RequireVec3("point");
+    const double angle = rot.RequireNumber("angle");
+    if (!(std::abs(angle) <= 360)) rot.Fail("angle", "must stay within +-360 degrees");
+    t.linear() = Eigen::AngleAxisd(angle * M_PI / 180, axis).toRotationMatrix();
+    t.translation() = point - t.linear() * point;
+  }
+  if (r.Has("translation")) {
+    const Vec3 shift = r.RequireVec3("translation");
+    if (!shift.allFinite() || !(shift.norm() <= 100)) r.Fail("translation", "must stay within 100 m");
+    t.pretranslate(shift);
+  }
+  return t;
+}
+
 MotionConfig ReadMotion(const FieldReader& r) {
-  RequireKnownKeys(r, {"name", "rotation", "translation", "steps", "return", "moving", "solids",
-                       "track", "note"});
+  RequireKnownKeys(r, {"name", "rotation", "translation", "poses", "steps", "return", "moving",
+                       "solids", "track", "note"});
   MotionConfig m;
   if (r.Has("name")) m.name = r.RequireString("name");
-  if (r.Has("rotation") == r.Has("translation"))
-    r.FailHere("needs exactly one of \"rotation\" or \"translation\"");
-  if (r.Has("rotation")) {
+  if (r.Has("rotation") + r.Has("translation") + r.Has("poses") != 1)
+    r.FailHere("needs exactly one of \"rotation\", \"translation\" or \"poses\"");
+  if (r.Has("poses")) {
+    m.kind = MotionConfig::Kind::kPoses;
+    m.steps = 1;
+    const Json& list = r.RequireArray("poses");
+    if (list.empty() || list.size() > 10000) r.Fail("poses", "must list 1 to 10000 poses");
+    for (size_t i = 0; i < list.size(); ++i)
+      m.poses.push_back(ReadPose(
+          FieldReader(list[i], r.file(), json::IndexKey(json::JoinKey(r.where(), "poses"), i))));
+    m.from = 0.0;
+    m.to = static_cast<double>(m.poses.size());
+  } else if (r.Has("rotation")) {
     const FieldReader rot = r.Child("rotation");
     RequireKnownKeys(rot, {"axis", "point", "angles", "note"});
     m.kind = MotionConfig::Kind::kRotation;
@@ -243,6 +278,9 @@ MotionConfig ReadMotion(const FieldReader& r) {
     if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000)
       r.Fail("steps", "must be a whole number from 1 to 100000, got " + json::Describe(v));
     m.steps = static_cast<int>(v.get<long long>());
+    if (m.kind == MotionConfig::Kind::kPoses &&
+        static_cast<long long>(m.steps) * static_cast<long long>(m.poses.size()) > 100000)
+      r.Fail("steps", "times the number of poses must stay within 100000");
   }
   m.there_and_back = OptionalBool(r, "return", true);
   if (r.Has("solids")) {
@@ -384,6 +422,34 @@ double HarnessConfig::SolidMinClearance(const std::string& name) const {
 
 Eigen::Isometry3d MotionConfig::At(double q) const {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  if (kind == Kind::kPoses) {
+    if (poses.empty()) return t;
+    const double n = static_cast<double>(poses.size());
+    const double x = std::clamp(q, 0.0, n);
+    const int k = std::min(static_cast<int>(std::floor(x)), static_cast<int>(poses.size()) - 1);
+    const double u = x - k;
+    const Eigen::Isometry3d a = k == 0 ? Eigen::Isometry3d::Identity() : poses[static_cast<size_t>(k - 1)];
+    const Eigen::Isometry3d& b = poses[static_cast<size_t>(k)];
+    if (u == 0.0) return a;
+    if (u == 1.0) return b;
+    // Along the screw from a to b (Chasles): the turn about its axis and the shift along it, a
+    // fraction u of each. A door between two listed poses swings on its hinge, not on the chord.
+    const Eigen::Isometry3d rel = b * a.inverse();
+    const Eigen::AngleAxisd turn(rel.linear());
+    const Vec3 shift = rel.translation();
+    if (!(turn.angle() > 1e-12)) {
+      t.translation() = u * shift;
+      return t * a;
+    }
+    const Vec3 axis_dir = turn.axis();
+    const double along = axis_dir.dot(shift);
+    const Vec3 across = shift - along * axis_dir;
+    // The screw axis passes through c: (I - R) c = across, c square to the axis.
+    const Vec3 c = 0.5 * (across + axis_dir.cross(across) / std::tan(0.5 * turn.angle()));
+    t.linear() = Eigen::AngleAxisd(u * turn.angle(), axis_dir).toRotationMatrix();
+    t.translation() = c - t.linear() * c + u * along * axis_dir;
+    return t * a;
+  }
   if (kind == Kind::kTranslation) {
     t.translation() = q * axis;
     return t;
@@ -398,14 +464,16 @@ std::vector<double> MotionConfig::Poses() const {
   std::vector<double> q;
   // Each parameter from its integer step (not by adding increments), so that the way back
   // passes exactly the same poses as the way there.
-  for (int i = 0; i <= steps; ++i) q.push_back(from + (to - from) * i / steps);
+  // A list of poses: `steps` from each listed pose to the next.
+  const int n = kind == Kind::kPoses ? steps * static_cast<int>(poses.size()) : steps;
+  for (int i = 0; i <= n; ++i) q.push_back(from + (to - from) * i / n);
   if (there_and_back)
-    for (int i = steps - 1; i >= 0; --i) q.push_back(from + (to - from) * i / steps);
+    for (int i = n - 1; i >= 0; --i) q.push_back(from + (to - from) * i / n);
   return q;
 }
 
 const char* MotionConfig::KindName() const {
-  return kind == Kind::kRotation ? "rotation" : "translation";
+  return kind == Kind::kRotation ? "rotation" : kind == Kind::kTranslation ? "translation" : "poses";
 }
 
 std::string HarnessConfig::RigidReason(const std::string& name) const {

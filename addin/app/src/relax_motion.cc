@@ -33,7 +33,9 @@ double Shown(const MotionConfig& m, double q) {
   return m.kind == MotionConfig::Kind::kRotation ? q * 180 / M_PI : q;
 }
 const char* ShownUnit(const MotionConfig& m) {
-  return m.kind == MotionConfig::Kind::kRotation ? "deg" : "m";
+  return m.kind == MotionConfig::Kind::kRotation ? "deg"
+         : m.kind == MotionConfig::Kind::kPoses  ? "pose"
+                                                  : "m";
 }
 
 // The set-up's support index a moving support names; -1 with `why` when there is none.
@@ -499,7 +501,8 @@ Json FileMotionToJson(const FileMotion& m) {
   Json j = {{"name", m.config.name},
             {"kind", m.config.KindName()},
             {"parameter_unit", ShownUnit(m.config)},
-            {"axis", json::ToJson(m.config.axis)},
+            {"axis", m.config.kind == MotionConfig::Kind::kPoses ? Json(nullptr)
+                                                                  : json::ToJson(m.config.axis)},
             {"parameters", q},
             {"there_and_back", m.config.there_and_back},
             {"cables", swept},

@@ -59,7 +59,8 @@ MotionPictures WriteMotionAnimation(const std::string& dir, const RelaxedFile& f
     scene.colour_scale = scale;
     char caption[256];
     std::snprintf(caption, sizeof caption, "pose %zu of %zu, %g %s", k, poses - 1,
-                  rotation ? m.q[k] * 180 / M_PI : m.q[k], rotation ? "deg" : "m");
+                  rotation ? m.q[k] * 180 / M_PI : m.q[k],
+                  rotation ? "deg" : m.config.kind == MotionConfig::Kind::kPoses ? "(listed pose)" : "m");
     out.captions.push_back(caption);
     scene.title = f.stem + ": '" + m.config.name + "', " + caption;
     for (size_t i = 0; i < f.drawing.cables.size(); ++i) {

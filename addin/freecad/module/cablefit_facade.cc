@@ -87,7 +87,9 @@ MotionSummary SummariseMotion(const addin::FileMotion& m) {
   MotionSummary out;
   out.name = m.config.name;
   out.kind = m.config.KindName();
-  out.unit = m.config.kind == addin::MotionConfig::Kind::kRotation ? "rad" : "m";
+  out.unit = m.config.kind == addin::MotionConfig::Kind::kRotation ? "rad"
+             : m.config.kind == addin::MotionConfig::Kind::kPoses  ? "pose"
+                                                                   : "m";
   out.q = m.q;
   out.problems = m.problems;
   out.seconds = m.seconds;

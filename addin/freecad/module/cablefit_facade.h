@@ -58,7 +58,7 @@ struct CableSummary {
 
 /// One pose of a swept cable: the numbers `cablefit relax` writes into the cable's "motion".
 struct MotionPoseSummary {
-  double q = 0.0;  ///< [rad] or [m] (MotionSummary::unit)
+  double q = 0.0;  ///< [rad], [m] or a pose number (MotionSummary::unit)
   bool converged = false, stable = false;
   bool escaped_unstable = false, jumped = false;  ///< the followed branch ended here (and how)
   double min_bend_radius = 0.0;                   ///< [m] (infinity when straight)
@@ -94,7 +94,7 @@ struct SweptCableSummary {
 struct MotionSummary {
   std::string name;
   std::string kind;                   ///< "rotation" or "translation"
-  std::string unit;                   ///< of q: "rad" (rotation) or "m" (translation)
+  std::string unit;                   ///< of q: "rad" (rotation), "m" (translation), "pose" (a list)
   std::vector<double> q;              ///< the poses' parameters, in `unit`
   std::vector<std::string> problems;  ///< moving supports that could not be swept, one line each
   std::vector<SweptCableSummary> cables;

@@ -57,6 +57,29 @@ TEST(RelaxMotionConfig, ARailTranslatesOneWayWhenReturnIsOff) {
   EXPECT_LT((m.At(0.25) * Vec3(1, 1, 1) - Vec3(1, 1.15, 1.2)).norm(), 1e-15);
 }
 
+TEST(RelaxMotionConfig, AListOfPosesIsVisitedInOrderAndInterpolatedBetween) {
+  // Pose 1: turned 90 degrees about z through (1, 0, 0); pose 2: that, then shifted up 0.5 m.
+  const HarnessConfig h = Read(R"({"poses": [
+      {"rotation": {"axis": [0, 0, 1], "point": [1, 0, 0], "angle": 90}},
+      {"rotation": {"axis": [0, 0, 1], "point": [1, 0, 0], "angle": 90}, "translation": [0, 0, 0.5]}],
+      "steps": 2, "moving": [{"cable": "c", "support": "end"}]})");
+  ASSERT_TRUE(h.motion);
+  const MotionConfig& m = *h.motion;
+  EXPECT_EQ(m.kind, MotionConfig::Kind::kPoses);
+  EXPECT_STREQ(m.KindName(), "poses");
+  const std::vector<double> q = m.Poses();
+  ASSERT_EQ(q.size(), 9u);  // 0, 0.5, 1, 1.5, 2 and back
+  EXPECT_EQ(q[4], 2.0);
+  EXPECT_EQ(q[2], q[6]);
+  const Vec3 p(2, 0, 5);
+  EXPECT_LT((m.At(0) * p - p).norm(), 1e-15);  // the drawing
+  EXPECT_LT((m.At(1) * p - Vec3(1, 1, 5)).norm(), 1e-15);
+  EXPECT_LT((m.At(2) * p - Vec3(1, 1, 5.5)).norm(), 1e-15);
+  // Halfway to pose 1: turned by 45 degrees; halfway between poses 1 and 2: shifted by half.
+  EXPECT_LT((m.At(0.5) * p - Vec3(1 + std::sqrt(0.5), std::sqrt(0.5), 5)).norm(), 1e-12);
+  EXPECT_LT((m.At(1.5) * p - Vec3(1, 1, 5.25)).norm(), 1e-12);
+}
+
 TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
   const std::string moving = R"("moving": [{"cable": "c", "support": "end"}])";
   const std::string hinge =
@@ -104,6 +127,20 @@ TEST(RelaxMotionConfig, BadMotionsAreRefusedNamingTheField) {
   EXPECT_NE(Error("{" + hinge + R"(, "solids": [""]})").find("motion.solids[0]"),
             std::string::npos);
   EXPECT_NE(Error("{" + hinge + R"(, "solids": "door"})").find("motion.solids"),
+            std::string::npos);
+  // Lists of poses.
+  EXPECT_NE(Error("{\"poses\": [], " + moving + "}").find("motion.poses"), std::string::npos);
+  EXPECT_NE(Error("{\"poses\": [{}], " + moving + "}").find("motion.poses[0]"),
+            std::string::npos);
+  EXPECT_NE(Error(R"({"poses": [{"rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angle": 400}}], )" +
+                  moving + "}")
+                .find("motion.poses[0].rotation.angle"),
+            std::string::npos);
+  EXPECT_NE(Error(R"({"poses": [{"translation": [0, 0, "up"]}], )" + moving + "}")
+                .find("motion.poses[0].translation"),
+            std::string::npos);
+  EXPECT_NE(Error("{" + hinge + R"(, "poses": [{"translation": [0, 0, 1]}], )" + moving + "}")
+                .find("exactly one"),
             std::string::npos);
   // Tracked points: a cable and an arc length.
   EXPECT_NE(Error("{" + hinge + ", " + moving + R"(, "track": [{"cable": "c", "s": -1}]})")

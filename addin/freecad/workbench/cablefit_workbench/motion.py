@@ -82,6 +82,8 @@ class Sweep:
         q = self.motion.q[k]
         if self.motion.unit == "rad":
             return "%.1f deg" % math.degrees(q)
+        if self.motion.unit == "pose":  # a list of poses: q counts them, fractions between
+            return "listed pose %g" % q
         return "%.1f mm" % (q * MM)
 
     def describe(self, k):

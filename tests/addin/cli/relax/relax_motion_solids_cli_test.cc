@@ -110,5 +110,38 @@ TEST(RelaxMotionSolidsCli, ATrackedPointOnTheDoorRunsOnACircleAboutTheHinge) {
   EXPECT_NEAR(t["travel"].get<double>(), 30 * 2 * r * std::sin(step / 2), 1e-4);
 }
 
+TEST(RelaxMotionSolidsCli, AListOfPosesReachesTheSameEquilibriaAsTheHingeSweep) {
+  const fs::path dir = testing::FreshTempDir("relax_motion_poses");
+  const Json hinge = Relax(dir, "hinge", [](Json*) {});
+  const Json listed = Relax(dir, "listed", [](Json* c) {
+    Json& m = (*c)["motion"];
+    m.erase("rotation");
+    m.erase("steps");
+    m["poses"] = Json::array();
+    for (double angle : {25.0, 50.0, 75.0})
+      m["poses"].push_back(
+          {{"rotation", {{"axis", {0, 0, 1}}, {"point", {0.30, -0.03, 0.0}}, {"angle", angle}}}});
+  });
+  EXPECT_EQ(listed["motion"]["kind"], "poses");
+  EXPECT_EQ(listed["motion"]["parameter_unit"], "pose");
+  const Json& a = hinge["cables"][0]["motion"]["poses"];  // 0, 5, ..., 75, ..., 0 degrees
+  const Json& b = listed["cables"][0]["motion"]["poses"];  // listed poses 0, 1, 2, 3, 2, 1, 0
+  ASSERT_EQ(b.size(), 7u);
+  for (int k = 0; k < 7; ++k) {
+    const int pose = k <= 3 ? k : 6 - k;
+    EXPECT_EQ(b[k]["q"].get<double>(), pose);
+    // Listed pose k is the hinge at 25 k degrees: the hinge sweep's pose 5 k.
+    const Json& rows_a = a[static_cast<size_t>(5 * pose)]["centreline"]["rows"];
+    const Json& rows_b = b[static_cast<size_t>(k)]["centreline"]["rows"];
+    ASSERT_EQ(rows_a.size(), rows_b.size());
+    double largest = 0.0;
+    for (size_t i = 0; i < rows_a.size(); ++i)
+      for (int c = 1; c <= 3; ++c)
+        largest = std::max(largest, std::abs(rows_a[i][c].get<double>() - rows_b[i][c].get<double>()));
+    EXPECT_LT(largest, 1e-8) << k;
+  }
+  EXPECT_LT(listed["cables"][0]["motion"]["back_to_start"].get<double>(), 1e-9);
+}
+
 }  // namespace
 }  // namespace cablefit

@@ -96,13 +96,20 @@ struct JunctionConfig {
 /// `from` to `to` in `steps` equal steps and, when `there_and_back`, back again. The drawing is
 /// the pose at parameter 0.
 struct MotionConfig {
-  enum class Kind { kRotation, kTranslation };
+  enum class Kind { kRotation, kTranslation, kPoses };
   std::string name = "motion";
   Kind kind = Kind::kRotation;
   Vec3 axis = Vec3::UnitZ();       ///< unit; rotation axis or translation direction
   Vec3 point = Vec3::Zero();       ///< [m] a point on the rotation axis
-  double from = 0.0, to = 0.0;     ///< [rad] for a rotation, [m] for a translation
-  int steps = 10;                  ///< >= 1 poses after the first, each way
+  double from = 0.0, to = 0.0;     ///< [rad] for a rotation, [m] for a translation, pose numbers
+  /// >= 1 poses after the first, each way; for a list of poses, the steps from one listed pose
+  /// to the next.
+  int steps = 10;
+  /// A list of poses (Kind::kPoses): rigid motions of the moving parts from their drawn place;
+  /// the drawing is pose 0, listed pose k is parameter k, and between two poses the motion
+  /// follows the screw from one to the other (turning about and shifting along its axis evenly:
+  /// a hinge swings on its arc).
+  std::vector<Eigen::Isometry3d> poses;
   bool there_and_back = true;
   /// One moving support: of cable `cable`, its "start", "end" or the index-th support of the
   /// cable's set-up (the order of the relax JSON's "supports").
@@ -122,11 +129,12 @@ struct MotionConfig {
     double s = 0.0;  ///< [m] along the cable
   };
   std::vector<TrackedPoint> tracks;
-  /// The rigid motion at parameter q ([rad] or [m]): maps a drawn point to its moved place.
+  /// The rigid motion at parameter q ([rad], [m] or a pose number): maps a drawn point to its
+  /// moved place.
   Eigen::Isometry3d At(double q) const;
   /// The parameters of the poses: from, ..., to (steps + 1) and, there and back, back to from.
   std::vector<double> Poses() const;
-  /// "rotation" or "translation".
+  /// "rotation", "translation" or "poses".
   const char* KindName() const;
 };
 
