@@ -107,6 +107,15 @@ bool AttachedTo(const CableSetup& setup, size_t k, const std::string& solid,
 
 }  // namespace
 
+double BackToStart(const CableMotion& cm, bool there_and_back) {
+  if (!there_and_back || !cm.completed || cm.poses.size() < 2)
+    return std::numeric_limits<double>::quiet_NaN();
+  return (cm.poses.front().centreline.points - cm.poses.back().centreline.points)
+      .colwise()
+      .norm()
+      .maxCoeff();
+}
+
 MotionPose MeasurePose(const CableRelaxation& relaxed, const SweepPose& p, double factor) {
   CableRelaxation r;
   r.setup = relaxed.setup;
@@ -146,12 +155,14 @@ CableMotion HeldStill(const CableRelaxation& relaxed, int cable, const std::vect
   p.converged = relaxed.result.converged;
   p.stable = relaxed.result.solution.summary.stable;
   p.result = relaxed.result;
+  // One shape at every pose: measured once.
+  const MotionPose still = MeasurePose(relaxed, p, config.min_bend_radius_factor);
   for (double x : q) {
-    p.q = x;
-    cm.poses.push_back(MeasurePose(relaxed, p, config.min_bend_radius_factor));
+    cm.poses.push_back(still);
+    cm.poses.back().q = x;
   }
   cm.completed = true;
-  cm.back_to_start = config.motion->there_and_back ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+  cm.back_to_start = BackToStart(cm, config.motion->there_and_back);
   return cm;
 }
 
@@ -264,12 +275,7 @@ void RunFileMotion(const HarnessConfig& config, const SimulationOptions& options
     } catch (const std::exception& e) {
       cm.message = e.what();
     }
-    cm.back_to_start = std::numeric_limits<double>::quiet_NaN();
-    if (mc.there_and_back && cm.completed && cm.poses.size() > 1)
-      cm.back_to_start = (cm.poses.front().centreline.points - cm.poses.back().centreline.points)
-                             .colwise()
-                             .norm()
-                             .maxCoeff();
+    cm.back_to_start = BackToStart(cm, mc.there_and_back);
     cm.seconds = std::chrono::duration<double>(Clock::now() - c0).count();
     fm.cables.push_back(std::move(cm));
   }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 #include "cablefit/core/network/network_sweep.h"
 
@@ -93,12 +92,7 @@ std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const Rel
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (CableMotion& cm : out) {
-    cm.back_to_start = std::numeric_limits<double>::quiet_NaN();
-    if (mc.there_and_back && cm.completed && cm.poses.size() > 1)
-      cm.back_to_start = (cm.poses.front().centreline.points - cm.poses.back().centreline.points)
-                             .colwise()
-                             .norm()
-                             .maxCoeff();
+    cm.back_to_start = BackToStart(cm, mc.there_and_back);
     cm.seconds = seconds;
   }
   return out;

@@ -17,6 +17,10 @@ namespace cablefit::addin {
 /// the centreline resampled for output.
 MotionPose MeasurePose(const CableRelaxation& relaxed, const SweepPose& p, double factor);
 
+/// [m] Largest distance between the first and the last pose's centrelines of a completed
+/// there-and-back sweep; NaN otherwise.
+double BackToStart(const CableMotion& cm, bool there_and_back);
+
 /// Sweeps `group` of `f` through the poses `q` of `config.motion`; `moving` maps a group cable
 /// (drawing index) to the indices of its set-up's supports that move, `moving_solids` lists the
 /// drawing solids that move (those among the group's obstacles move in its contact). One
