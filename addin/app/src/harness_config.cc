@@ -531,7 +531,7 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   if (r.Has("motion")) h.motion = ReadMotion(r.Child("motion"));
   if (r.Has("tolerances")) {
     const FieldReader t = r.Child("tolerances");
-    RequireKnownKeys(t, {"length", "bending_stiffness", "linear_density", "note"});
+    RequireKnownKeys(t, {"length", "bending_stiffness", "linear_density", "clip_position", "note"});
     ToleranceConfig tc;
     // Fractions: beyond these it is another cable, not a tolerance (and EI or the mass would
     // reach zero).
@@ -545,7 +545,15 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
     tc.length = fraction("length", 0.5);
     tc.bending_stiffness = fraction("bending_stiffness", 0.9);
     tc.linear_density = fraction("linear_density", 0.9);
-    if (!tc.any()) t.FailHere("must vary at least one of length, bending_stiffness, linear_density");
+    if (t.Has("clip_position")) {
+      tc.clip_position = t.RequireNonNegative("clip_position");
+      // A metre is a different harness, not a fixing's tolerance (and a typo for millimetres).
+      if (tc.clip_position >= 1.0)
+        t.Fail("clip_position", "must be below 1 m (0.01 = +-10 mm along the cable)");
+    }
+    if (!tc.any())
+      t.FailHere(
+          "must vary at least one of length, bending_stiffness, linear_density, clip_position");
     h.tolerances = tc;
   }
   if (r.Has("default")) h.defaults = ReadCable(r.Child("default"), /*is_default=*/true);

@@ -50,12 +50,8 @@ std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const Rel
     // at the drawn pose and reported.
     NetworkSweepOptions so;
     so.network = PlanNetworkRelax(spec, options).options;
-    so.network.refinement = 0;
-    const std::vector<int>& levels = f.cables[static_cast<size_t>(group.cables[0])]->result.level_elements;
-    if (!levels.empty()) {
-      const int finest = std::min(levels.back(), kSweepElements);
-      for (size_t k = 1; k < levels.size() && levels[k] <= finest; ++k) so.network.refinement = static_cast<int>(k);
-    }
+    so.network.refinement = RepeatedSolveLevel(
+        f.cables[static_cast<size_t>(group.cables[0])]->result.level_elements, kSweepElements);
     so.jump_floor = 10 * options.accuracy;
     const NetworkSweepSummary sweep =
         SweepNetwork(spec, parts, [&mc](double p) { return mc.At(p); }, q, so);

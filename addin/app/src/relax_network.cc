@@ -193,6 +193,13 @@ NetworkSimulation SimulateWithoutGravity(const NetworkSpec& spec, const NetworkO
   return SimulateNetwork(weightless, plan, opt);
 }
 
+int RepeatedSolveLevel(const std::vector<int>& level_elements, int max_elements) {
+  int level = 0;
+  for (size_t k = 1; k < level_elements.size() && level_elements[k] <= max_elements; ++k)
+    level = static_cast<int>(k);
+  return level;
+}
+
 NetworkSpec GroupNetworkSpec(const HarnessDrawing& drawing, const RelaxGroup& group,
                              const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
                              std::vector<CableSetup>* setups) {

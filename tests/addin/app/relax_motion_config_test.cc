@@ -168,8 +168,12 @@ TEST(RelaxToleranceConfig, FractionsAreReadAndImpossibleOnesRefused) {
   EXPECT_DOUBLE_EQ(h.tolerances->length, 0.02);
   EXPECT_DOUBLE_EQ(h.tolerances->bending_stiffness, 0.3);
   EXPECT_DOUBLE_EQ(h.tolerances->linear_density, 0.0);
+  EXPECT_DOUBLE_EQ(h.tolerances->clip_position, 0.0);
+  std::ofstream(path) << R"({"tolerances": {"clip_position": 0.01}})";
+  EXPECT_DOUBLE_EQ(ReadHarnessConfig(path).tolerances->clip_position, 0.01);
   for (const char* bad :
        {R"({"tolerances": {"length": -0.02}})", R"({"tolerances": {"length": 0.5}})",
+        R"({"tolerances": {"clip_position": -0.01}})", R"({"tolerances": {"clip_position": 10}})",
         R"({"tolerances": {"bending_stiffness": 0.95}})", R"({"tolerances": {}})",
         R"({"tolerances": {"length": "2%"}})", R"({"tolerances": {"clips": 0.01}})"}) {
     std::ofstream(path) << bad;

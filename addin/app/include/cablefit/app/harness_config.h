@@ -139,12 +139,18 @@ struct MotionConfig {
 };
 
 /// "tolerances": relative +- variations of every cable's length, bending (and torsional)
-/// stiffness and linear density; 0 = not varied. The tolerance envelope solves every corner.
+/// stiffness and linear density, and the +- shift of every fixing along its cable; 0 = not
+/// varied. The tolerance envelope solves the corners of that box.
 struct ToleranceConfig {
   double length = 0.0;             ///< e.g. 0.02 = +-2 % of the built length
   double bending_stiffness = 0.0;  ///< scales EI and GJ together
   double linear_density = 0.0;
-  bool any() const { return length > 0 || bending_stiffness > 0 || linear_density > 0; }
+  /// [m] where on the cable each support between its ends holds it (a clip's taped position on
+  /// the bundle), +- this; the support itself stays where it is in the vehicle.
+  double clip_position = 0.0;
+  bool any() const {
+    return length > 0 || bending_stiffness > 0 || linear_density > 0 || clip_position > 0;
+  }
 };
 
 struct HarnessConfig {

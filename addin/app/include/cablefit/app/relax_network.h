@@ -52,6 +52,11 @@ struct NetworkRelaxPlan {
 };
 NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptions& options);
 
+/// The refinement level (index into a relax's `level_elements`) at which a network is solved
+/// many times over (motion poses, tolerance corners): the finest with at most `max_elements`
+/// elements, else the first. The relax's own levels, so its first level's start is known good.
+int RepeatedSolveLevel(const std::vector<int>& level_elements, int max_elements);
+
 /// The network without gravity on one level (`options` at refinement 0), for the springback/sag
 /// split: it needs no extrapolated accuracy. Started from `loaded`, the node centrelines of the
 /// solution under gravity (one per branch), so Newton only takes the gravity off instead of

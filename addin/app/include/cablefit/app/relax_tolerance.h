@@ -1,54 +1,88 @@
-// The tolerance envelope of harness.json "tolerances": every relaxed single-rod cable solved at
-// each corner of its length x bending stiffness x density box (2^k corners for k varied
-// quantities), and its largest excursion from the nominal shape (same relative arc length).
-// Corners bound the envelope when the shape moves monotonically with each quantity; that is
-// checked, not assumed: a few interior points of the box (fixed pseudo-random) are solved too,
-// and the output says whether any went further than the corners.
+// The tolerance envelope of harness.json "tolerances": every relaxed cable solved with its
+// length, bending stiffness and density varied, and with the place on it of every fixing between
+// its ends shifted, at the corners of that box; its largest excursion from the nominal shape.
+// Cables solved alone vary alone; a network (breakouts, contact) varies as one: length,
+// stiffness and density of all its cables together (one batch of material), each fixing on its
+// own. Up to kExhaustiveQuantities varied quantities every corner is solved; with more, the
+// corners that the linearised shape says are worst (core/solver/tolerance_corners). Either way
+// corners bound the envelope only when the shape moves monotonically; that is checked, not
+// assumed: a few interior points of the box (fixed pseudo-random) are solved too, and the output
+// says whether any went further than the corners.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "cablefit/app/harness_config.h"
+#include "cablefit/app/relax_cable.h"
+#include "cablefit/core/network/network_spec.h"
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/json_util.h"
 
 namespace cablefit::addin {
 
-/// One varied set-up: the relative change of each quantity and how far the shape went.
+/// One varied set-up of a cable, and how far its shape went.
 struct ToleranceCase {
   double length = 0.0, bending_stiffness = 0.0, linear_density = 0.0;  ///< signed fractions
+  std::vector<double> clip_shift;  ///< [m] per CableTolerance::clip_s, + = further along
   bool converged = false;
-  double excursion = 0.0;     ///< [m] largest distance to the nominal shape at the same s / L
-  double s = 0.0;             ///< [m] nominal arc length where it is largest
-  Vec3 point = Vec3::Zero();  ///< [m] the varied cable's point there
+  std::string why;  ///< why it was not solved (a set-up that cannot exist, a solver failure)
+  /// [m] the farthest any point of the varied cable is from the nominal cable (as a curve:
+  /// how far outside the nominal place it can be, whatever slides along it)
+  double excursion = 0.0;
+  double s = 0.0;             ///< [m] arc length of the nominal cable's point nearest to it
+  Vec3 point = Vec3::Zero();  ///< [m] the varied cable's point farthest out
   Polyline centreline;        ///< the varied relaxed shape (s [m], 3 x n [m]); empty if not converged
 };
 
 struct CableTolerance {
   int cable = 0;
   std::string name;
+  /// The supports between the cable's ends whose place on it is varied: nominal arc length
+  /// [m], tolerance used [m] (less than asked where a neighbouring support or an end is
+  /// nearer: at most 45 % of the gap), and where the support comes from.
+  std::vector<double> clip_s, clip_tolerance;
+  std::vector<std::string> clip_origin;
   std::vector<ToleranceCase> corners, interior;
   int worst_corner = -1;        ///< index into corners, -1 when none converged
   bool interior_within = true;  ///< no interior case went further than the worst corner
+  int quantities = 0;           ///< varied quantities of the solve (the network's for a network)
+  bool all_corners = true;      ///< every corner solved, else chosen by sensitivity
+  int sensitivity_solves = 0;   ///< solves spent on sensitivities (0 with all corners)
+  std::string network;          ///< the network's cables when solved as one, else empty
+  int elements = 0;             ///< a network's elements (solved at one level, not refined)
+  /// [m] a network's: the nominal at that level against the refined relax (NaN otherwise)
+  double resolution_error = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
 };
 
 struct FileTolerance {
   ToleranceConfig config;
   std::vector<CableTolerance> cables;
-  std::vector<std::string> problems;  ///< cables not varied, and why
+  std::vector<std::string> problems;  ///< cables not varied, and why; tolerances cut short
 };
 
-/// `spec` with its length changed by the fraction `length` (support, load and curvature arc
-/// lengths scaled with it, positions kept), EI and GJ by `stiffness`, mass by `density`.
-RodSpec VariedSpec(const RodSpec& spec, double length, double stiffness, double density);
-
+/// Varied quantities beyond which corners are chosen by sensitivity (2^6 = 64 solves).
+inline constexpr int kExhaustiveQuantities = 6;
+/// Corners solved at most when chosen by sensitivity (pairs of opposites).
+inline constexpr int kChosenCorners = 32;
 /// Pseudo-random interior points of the box solved to check the corners cover it.
 inline constexpr int kInteriorChecks = 8;
 
+/// `spec` with its length changed by the fraction `length` (support, sleeve, load and curvature
+/// arc lengths scaled with it, positions kept), EI and GJ by `stiffness`, mass by `density`.
+RodSpec VariedSpec(const RodSpec& spec, double length, double stiffness, double density);
+/// The same for every branch of a network (junctions, obstacles and routes kept).
+NetworkSpec VariedNetworkSpec(const NetworkSpec& spec, double length, double stiffness,
+                              double density);
+
+/// The tolerance envelope of one cable solved alone, from its nominal relaxation.
+CableTolerance SingleCableTolerance(const CableRelaxation& nominal, const ToleranceConfig& config,
+                                    const SimulationOptions& options,
+                                    std::vector<std::string>* problems);
+
 struct RelaxedFile;
-/// Runs the envelope on every relaxed cable of `f` solved alone (not a network).
+/// Runs the envelope on every relaxed cable of `f`, alone or with its network.
 void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options,
                       RelaxedFile* f);
 

@@ -1,0 +1,181 @@
+#include "tolerance_search.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include "cablefit/core/solver/centerline_sampling.h"
+#include "cablefit/core/solver/tolerance_corners.h"
+
+namespace cablefit::addin {
+namespace {
+
+// Points per branch compared, linearised and kept as a varied shape.
+constexpr int kShapeSamples = 201;
+
+double Length(const Polyline& p) { return p.size() > 1 ? p.s[p.size() - 1] - p.s[0] : 0.0; }
+
+Polyline Uniform(const Polyline& nodes, int n) {
+  return SampleCenterline(nodes, UniformArcLengths(Length(nodes), n));
+}
+
+// Displacements of every branch's samples between two solved set-ups, at the same relative arc
+// length, without their component along the nominal cable: a point sliding along the cable
+// (a fixing shifted, a longer cable) does not take it anywhere new.
+Eigen::Matrix3Xd Displacement(const std::vector<Polyline>& nominal, const std::vector<Polyline>& a,
+                              const std::vector<Polyline>& b) {
+  Eigen::Matrix3Xd d(3, kShapeSamples * static_cast<Eigen::Index>(nominal.size()));
+  for (size_t br = 0; br < nominal.size(); ++br) {
+    const Polyline n = Uniform(nominal[br], kShapeSamples);
+    const Eigen::Matrix3Xd diff =
+        Uniform(a[br], kShapeSamples).points - Uniform(b[br], kShapeSamples).points;
+    for (int j = 0; j < kShapeSamples; ++j) {
+      const int j0 = std::max(0, j - 1), j1 = std::min(kShapeSamples - 1, j + 1);
+      Vec3 t = n.points.col(j1) - n.points.col(j0);
+      Vec3 v = diff.col(j);
+      if (t.norm() > 0) v -= v.dot(t.normalized()) * t.normalized();
+      d.col(static_cast<Eigen::Index>(br) * kShapeSamples + j) = v;
+    }
+  }
+  return d;
+}
+
+// Distance of p to segment [a, b] and the segment parameter of the nearest point.
+double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b, double* t) {
+  const Vec3 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  *t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + *t * ab)).norm();
+}
+
+}  // namespace
+
+ToleranceSearch SearchToleranceBox(int k, const std::vector<Polyline>& nominal,
+                                   const ToleranceSolver& solve) {
+  ToleranceSearch out;
+  auto run = [&solve](const Eigen::VectorXd& eps) {
+    ToleranceOutcome o;
+    o.eps = eps;
+    try {
+      o.converged = solve(eps, &o.shapes, &o.why);
+    } catch (const std::exception& e) {
+      o.converged = false;
+      o.why = e.what();
+    }
+    if (!o.converged) o.shapes.clear();
+    return o;
+  };
+  std::vector<Eigen::VectorXd> corners;
+  if (k <= kExhaustiveQuantities) {
+    corners = AllCorners(k);
+  } else {
+    out.all_corners = false;
+    std::vector<Eigen::Matrix3Xd> sensitivity;
+    for (int q = 0; q < k; ++q) {
+      const Eigen::VectorXd e = Eigen::VectorXd::Unit(k, q);
+      const ToleranceOutcome plus = run(e), minus = run(-e);
+      out.sensitivity_solves += 2;
+      // Central difference; one-sided where one side failed; nothing known where both did
+      // (its corners are then chosen by the other quantities alone).
+      if (plus.converged && minus.converged)
+        sensitivity.push_back(0.5 * Displacement(nominal, plus.shapes, minus.shapes));
+      else if (plus.converged)
+        sensitivity.push_back(Displacement(nominal, plus.shapes, nominal));
+      else if (minus.converged)
+        sensitivity.push_back(Displacement(nominal, nominal, minus.shapes));
+      else
+        sensitivity.push_back(Eigen::Matrix3Xd::Zero(3, kShapeSamples * static_cast<Eigen::Index>(nominal.size())));
+    }
+    corners = WorstCorners(sensitivity, kChosenCorners);
+  }
+  for (const Eigen::VectorXd& eps : corners) out.corners.push_back(run(eps));
+  // Fixed seed: every run and thread count solves the same interior set-ups.
+  std::mt19937 rng(25);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < kInteriorChecks && k > 0; ++i) {
+    Eigen::VectorXd eps(k);
+    for (int q = 0; q < k; ++q) eps[q] = u(rng);
+    out.interior.push_back(run(eps));
+  }
+  return out;
+}
+
+CurveExcursion MeasureExcursion(const Polyline& nominal, const Polyline& varied) {
+  CurveExcursion ex;
+  if (nominal.size() < 2 || varied.size() < 1) return ex;
+  // The nominal curve about every millimetre (its node polyline's chords would read a bend
+  // as up to h^2 / 8R too close), in chunks with bounding spheres so a point only looks at the
+  // chunks that can hold its nearest point.
+  const double length = Length(nominal);
+  const int n = std::clamp(static_cast<int>(std::ceil(length / 1e-3)) + 1, kShapeSamples, 4001);
+  const Polyline dense = Uniform(nominal, n);
+  constexpr int kChunk = 16;
+  struct Chunk { int first, last; Vec3 centre; double radius; };
+  std::vector<Chunk> chunks;
+  for (int a = 0; a + 1 < n; a += kChunk) {
+    Chunk c{a, std::min(n - 1, a + kChunk), Vec3::Zero(), 0.0};
+    const auto block = dense.points.middleCols(c.first, c.last - c.first + 1);
+    c.centre = block.rowwise().mean();
+    c.radius = (block.colwise() - c.centre).colwise().norm().maxCoeff();
+    chunks.push_back(c);
+  }
+  for (Eigen::Index j = 0; j < varied.points.cols(); ++j) {
+    const Vec3 p = varied.points.col(j);
+    double best = std::numeric_limits<double>::infinity(), best_s = 0.0;
+    for (const Chunk& c : chunks) {
+      if ((p - c.centre).norm() - c.radius >= best) continue;
+      for (int i = c.first; i < c.last; ++i) {
+        double t = 0.0;
+        const double d = SegmentDistance(p, dense.points.col(i), dense.points.col(i + 1), &t);
+        if (d < best) {
+          best = d;
+          best_s = dense.s[i] + t * (dense.s[i + 1] - dense.s[i]);
+        }
+      }
+    }
+    if (best > ex.distance || j == 0) {
+      ex.distance = best;
+      ex.s = best_s;
+      ex.point = p;
+    }
+  }
+  return ex;
+}
+
+void MeasureCases(const ToleranceSearch& search, int branch, const Polyline& nominal,
+                  double yardstick,
+                  const std::function<ToleranceCase(const Eigen::VectorXd&)>& describe,
+                  CableTolerance* ct) {
+  auto measure = [&](const ToleranceOutcome& o) {
+    ToleranceCase c = describe(o.eps);
+    c.converged = o.converged;
+    c.why = o.why;
+    if (o.converged) {
+      c.centreline = Uniform(o.shapes[static_cast<size_t>(branch)], kShapeSamples);
+      const CurveExcursion ex = MeasureExcursion(nominal, c.centreline);
+      c.excursion = ex.distance;
+      c.s = ex.s;
+      c.point = ex.point;
+    }
+    return c;
+  };
+  for (const ToleranceOutcome& o : search.corners) ct->corners.push_back(measure(o));
+  for (size_t k = 0; k < ct->corners.size(); ++k)
+    if (ct->corners[k].converged &&
+        (ct->worst_corner < 0 ||
+         ct->corners[k].excursion > ct->corners[static_cast<size_t>(ct->worst_corner)].excursion))
+      ct->worst_corner = static_cast<int>(k);
+  const double worst =
+      ct->worst_corner >= 0 ? ct->corners[static_cast<size_t>(ct->worst_corner)].excursion : 0.0;
+  for (const ToleranceOutcome& o : search.interior) {
+    ct->interior.push_back(measure(o));
+    const ToleranceCase& c = ct->interior.back();
+    if (c.converged && c.excursion > worst + yardstick) ct->interior_within = false;
+  }
+  ct->all_corners = search.all_corners;
+  ct->sensitivity_solves = search.sensitivity_solves;
+}
+
+}  // namespace cablefit::addin
