@@ -98,9 +98,16 @@ std::vector<EnvelopeFiles> WriteEnvelopeFiles(const std::string& dir, const Rela
       const auto& nominal = f.cables[static_cast<size_t>(t.cable)];
       if (!nominal) continue;
       Shapes s{t.cable, {nominal->relaxed}};
-      for (const auto* list : {&t.corners, &t.interior})
-        for (const ToleranceCase& c : *list)
-          if (c.converged && c.centreline.size() > 1) s.shapes.push_back(c.centreline);
+      // The corners bound it; an interior check only adds where it went beyond them (each shape
+      // is a solid in the STEP: a 30-segment harness's 8 interior checks were 240 more tubes).
+      const double worst = t.worst_corner >= 0
+                               ? t.corners[static_cast<size_t>(t.worst_corner)].excursion
+                               : 0.0;
+      for (const ToleranceCase& c : t.corners)
+        if (c.converged && c.centreline.size() > 1) s.shapes.push_back(c.centreline);
+      for (const ToleranceCase& c : t.interior)
+        if (c.converged && c.centreline.size() > 1 && c.excursion > worst)
+          s.shapes.push_back(c.centreline);
       cables.push_back(std::move(s));
     }
     if (!cables.empty()) written.push_back(Write(dir, f, config, "tolerance", cables));
@@ -129,8 +136,9 @@ json::Json EnvelopeFilesToJson(const std::vector<EnvelopeFiles>& files) {
               ? "union of the closed tube surfaces of every converged pose (a pose repeating an "
                 "earlier one within 1e-6 m left out), overlapping shells in one mesh; nothing "
                 "between poses"
-              : "union of the closed tube surfaces of the nominal shape and every converged "
-                "corner and interior check, overlapping shells in one mesh"}});
+              : "union of the closed tube surfaces of the nominal shape, every converged "
+                "corner and any interior check that went further than the corners, overlapping "
+                "shells in one mesh"}});
   }
   return out;
 }
