@@ -13,6 +13,9 @@
 namespace cablefit::addin {
 namespace {
 
+// Tubes in an envelope STEP at most.
+constexpr size_t kMaxEnvelopeStepTubes = 300;
+
 struct Shapes {
   int cable = 0;
   std::vector<Polyline> shapes;
@@ -57,6 +60,15 @@ EnvelopeFiles Write(const std::string& dir, const RelaxedFile& f, const HarnessC
     for (const Polyline& shape : used[k])
       tubes.push_back({cables[k].cable, shape, OutputDiameter(f, cables[k].cable, config)});
   std::vector<std::string> skipped;
+  if (tubes.size() > kMaxEnvelopeStepTubes) {
+    // Each tube is an OCCT sweep (~0.1 s): a 183-segment harness's tolerance envelope took
+    // minutes for a file nobody opens whole.
+    out.step.clear();
+    out.step_problem = "not written: " + std::to_string(tubes.size()) + " tubes, more than " +
+                       std::to_string(kMaxEnvelopeStepTubes) +
+                       " (the STL and GLB hold the envelope)";
+    return out;
+  }
   try {
     WriteRelaxedStep((folder / out.step).string(), tubes_only, tubes, &skipped);
   } catch (const InvalidInput& e) {

@@ -19,6 +19,10 @@ constexpr int kToleranceElements = 2000;
 // A fixing moves at most this share of the way to its neighbouring support or cable end: the
 // supports keep their order and the cable between them some length.
 constexpr double kClipShiftShare = 0.45;
+// ... and at most this share of the slack of the cable it shortens (half of it shared with a
+// neighbour that moves too): an inextensible cable pulled nearly taut is a corner the solver
+// may not reach, and a harness nobody would build.
+constexpr double kClipSlackShare = 0.5;
 
 // RodSpec and BranchSpec alike: length, the arc lengths of everything on the cable, material.
 template <class Spec>
@@ -46,7 +50,8 @@ struct Layout {
   int length = -1, stiffness = -1, density = -1;
   struct Clip {
     int branch = 0, support = 0;
-    double tolerance = 0.0;  // [m]
+    double back = 0.0, ahead = 0.0;  // [m] the shift towards smaller s and towards larger s
+    double Shift(double e) const { return e >= 0 ? e * ahead : e * back; }
   };
   std::vector<Clip> clips;  // entries base, base + 1, ...
   int base = 0;
@@ -61,33 +66,106 @@ Layout QuantityLayout(const ToleranceConfig& tc) {
   return lay;
 }
 
-// The fixings between a cable's ends whose place on it varies (not sliding ones: the cable
-// runs through those anyway), with the tolerance each can take; a line in `problems` for each
-// one that takes less than asked.
-void AddClips(const std::vector<SupportSpec>& supports, double length, int branch,
-              const ToleranceConfig& tc, const std::string& cable, Layout* lay,
+bool Varied(const BranchSpec& b, size_t i) {
+  const SupportSpec& sp = b.supports[i];
+  const double end_gap = 1e-9 * std::max(1.0, b.length);
+  return !sp.sliding && sp.s > end_gap && sp.s < b.length - end_gap;
+}
+
+// A support that holds the cable on one side of a fixing: the cable between them [m], where
+// it is, whether it is a fixing that moves too.
+struct Neighbour {
+  double arc = 0.0;
+  Vec3 position = Vec3::Zero();
+  bool moves = false;
+};
+
+// The first supports reached from junction `j` along every branch but `from` (through
+// junctions with bare branches between them), `arc` [m] of cable already behind.
+void ThroughJunction(const NetworkSpec& net, int j, int from, double arc, std::vector<char>* seen,
+                     std::vector<Neighbour>* out) {
+  if (j < 0 || (*seen)[static_cast<size_t>(j)]) return;
+  (*seen)[static_cast<size_t>(j)] = 1;
+  for (size_t b = 0; b < net.branches.size(); ++b) {
+    if (static_cast<int>(b) == from) continue;
+    const BranchSpec& br = net.branches[b];
+    const size_t n = br.supports.size();
+    if (br.start_junction == j) {
+      if (n > 0)
+        out->push_back({arc + br.supports[0].s, br.supports[0].position, Varied(br, 0)});
+      else
+        ThroughJunction(net, br.end_junction, static_cast<int>(b), arc + br.length, seen, out);
+    }
+    if (br.end_junction == j) {
+      if (n > 0)
+        out->push_back({arc + br.length - br.supports[n - 1].s, br.supports[n - 1].position,
+                        Varied(br, n - 1)});
+      else
+        ThroughJunction(net, br.start_junction, static_cast<int>(b), arc + br.length, seen, out);
+    }
+  }
+}
+
+// How far a fixing at `at` can move into the cable towards its neighbours on one side: `share`
+// (of the shorter cable on either side: the supports keep their order, neither side doubles),
+// and no more than half the slack of the cable it shortens to each neighbour (its length at
+// the shortest length tolerance, less the two supports' distance; through junctions too),
+// half of that again when the neighbour moves as well: a fixing taped further towards a
+// connector than a straight (taut) stretch allows cannot be mounted, and every corner with it
+// would be a harness that cannot be built.
+double Room(double share, const Vec3& at, const std::vector<Neighbour>& side,
+            const ToleranceConfig& tc) {
+  double room = share;
+  for (const Neighbour& n : side) {
+    const double slack = std::max(0.0, (1.0 - tc.length) * n.arc - (at - n.position).norm());
+    room = std::min(room, (n.moves ? 0.5 : 1.0) * kClipSlackShare * slack);
+  }
+  return room;
+}
+
+// The fixings between branch `b`'s ends whose place on it varies (not sliding ones: the cable
+// runs through those anyway), with the range each can take; a line in `problems` for each one
+// that takes less than asked.
+void AddClips(const NetworkSpec& net, int b, const ToleranceConfig& tc, Layout* lay,
               std::vector<std::string>* problems) {
   if (tc.clip_position <= 0) return;
-  std::vector<double> all = {0.0, length};
-  for (const SupportSpec& sp : supports) all.push_back(sp.s);
-  std::sort(all.begin(), all.end());
-  const double end_gap = 1e-9 * std::max(1.0, length);
+  const BranchSpec& br = net.branches[static_cast<size_t>(b)];
+  const std::vector<SupportSpec>& supports = br.supports;
+  // Supports are in increasing s (the rod and network specs require it).
   for (size_t i = 0; i < supports.size(); ++i) {
+    if (!Varied(br, i)) continue;
     const SupportSpec& sp = supports[i];
-    if (sp.sliding || sp.s <= end_gap || sp.s >= length - end_gap) continue;
-    const auto at = std::lower_bound(all.begin(), all.end(), sp.s);
-    const double before = sp.s - *std::prev(at), after = *std::next(at) - sp.s;
-    const double room = kClipShiftShare * std::min(before, after);
-    Layout::Clip c{branch, static_cast<int>(i), std::min(tc.clip_position, room)};
-    if (c.tolerance <= 0) continue;
-    if (c.tolerance < tc.clip_position) {
-      char buf[300];
+    std::vector<Neighbour> before, after;
+    std::vector<char> seen(net.junctions.size(), 0);
+    if (i > 0)
+      before.push_back({sp.s - supports[i - 1].s, supports[i - 1].position, Varied(br, i - 1)});
+    else
+      ThroughJunction(net, br.start_junction, b, sp.s, &seen, &before);
+    if (i + 1 < supports.size())
+      after.push_back({supports[i + 1].s - sp.s, supports[i + 1].position, Varied(br, i + 1)});
+    else
+      ThroughJunction(net, br.end_junction, b, br.length - sp.s, &seen, &after);
+    const double arc_prev = i > 0 ? sp.s - supports[i - 1].s : sp.s;
+    const double arc_next = i + 1 < supports.size() ? supports[i + 1].s - sp.s : br.length - sp.s;
+    const double share = kClipShiftShare * std::min(arc_prev, arc_next);
+    Layout::Clip c{b, static_cast<int>(i), 0.0, 0.0};
+    c.back = std::min(tc.clip_position, Room(share, sp.position, before, tc));
+    c.ahead = std::min(tc.clip_position, Room(share, sp.position, after, tc));
+    if (c.back < tc.clip_position || c.ahead < tc.clip_position) {
+      // Why, side by side: short (the share of the shorter cable) or nearly taut (its slack).
+      auto reason = [&](double room) { return room < share ? "nearly taut" : "short"; };
+      std::string why;
+      if (c.back < tc.clip_position) why = std::string("before it ") + reason(c.back);
+      if (c.ahead < tc.clip_position)
+        why += (why.empty() ? "" : ", ") + std::string("after it ") + reason(c.ahead);
+      char buf[400];
       std::snprintf(buf, sizeof buf,
-                    "tolerances: cable '%s': the support at s=%.0f mm is shifted by +-%.1f mm "
-                    "only: the next support or end is %.1f mm away",
-                    cable.c_str(), 1e3 * sp.s, 1e3 * c.tolerance, 1e3 * std::min(before, after));
+                    "tolerances: cable '%s': the support at s=%.0f mm is shifted by -%.1f/+%.1f "
+                    "mm only: the cable %s",
+                    br.name.c_str(), 1e3 * sp.s, 1e3 * c.back, 1e3 * c.ahead, why.c_str());
       problems->push_back(buf);
     }
+    if (c.back <= 0 && c.ahead <= 0) continue;
     lay->clips.push_back(c);
   }
 }
@@ -105,7 +183,7 @@ ToleranceCase Describe(const Layout& lay, const ToleranceConfig& tc, int branch,
   c.linear_density = Entry(eps, lay.density, tc.linear_density);
   for (size_t i = 0; i < lay.clips.size(); ++i)
     if (lay.clips[i].branch == branch)
-      c.clip_shift.push_back(eps[lay.base + static_cast<int>(i)] * lay.clips[i].tolerance);
+      c.clip_shift.push_back(lay.clips[i].Shift(eps[lay.base + static_cast<int>(i)]));
   return c;
 }
 
@@ -113,12 +191,41 @@ void ListClips(const Layout& lay, int branch, const std::vector<SupportSpec>& su
                const std::vector<std::string>& origins, CableTolerance* ct) {
   for (const Layout::Clip& c : lay.clips) {
     if (c.branch != branch) continue;
-    ct->clip_s.push_back(supports[static_cast<size_t>(c.support)].s);
-    ct->clip_tolerance.push_back(c.tolerance);
-    ct->clip_origin.push_back(static_cast<size_t>(c.support) < origins.size()
-                                  ? origins[static_cast<size_t>(c.support)]
-                                  : std::string(ToString(supports[static_cast<size_t>(c.support)].kind)));
+    const size_t k = static_cast<size_t>(c.support);
+    ct->clip_s.push_back(supports[k].s);
+    ct->clip_range.push_back({-c.back, c.ahead});
+    ct->clip_origin.push_back(k < origins.size() ? origins[k]
+                                                 : std::string(ToString(supports[k].kind)));
   }
+}
+
+// The nominal shape as the start of a varied set-up whose supports hold the cable at other arc
+// lengths: its points re-labelled by the piecewise-linear map taking each nominal support's arc
+// length (and both ends) to the varied one's, so every support starts where it is held. A plain
+// nominal start puts a fixing shifted by 20 mm 20 mm off its clip, more than Newton recovers
+// from next to a nearly taut stretch.
+Polyline RemappedStart(const Polyline& nominal, const std::vector<SupportSpec>& from, double from_length,
+                       const std::vector<SupportSpec>& to, double to_length) {
+  std::vector<double> a = {0.0}, b = {0.0};
+  for (size_t i = 0; i < from.size() && i < to.size(); ++i) {
+    if (from[i].s <= a.back() || to[i].s <= b.back() || from[i].s >= from_length ||
+        to[i].s >= to_length)
+      continue;
+    a.push_back(from[i].s);
+    b.push_back(to[i].s);
+  }
+  a.push_back(from_length);
+  b.push_back(to_length);
+  Polyline out = nominal;
+  const double scale = from_length / std::max(1e-300, nominal.s[nominal.size() - 1] - nominal.s[0]);
+  size_t k = 0;
+  for (Eigen::Index j = 0; j < out.s.size(); ++j) {
+    const double x = (nominal.s[j] - nominal.s[0]) * scale;
+    while (k + 2 < a.size() && x > a[k + 1]) ++k;
+    const double t = std::clamp((x - a[k]) / (a[k + 1] - a[k]), 0.0, 1.0);
+    out.s[j] = b[k] + t * (b[k + 1] - b[k]);
+  }
+  return out;
 }
 
 double Seconds(std::chrono::steady_clock::time_point t0) {
@@ -129,7 +236,7 @@ double Seconds(std::chrono::steady_clock::time_point t0) {
 std::vector<CableTolerance> NetworkTolerance(const RelaxedFile& f, const RelaxGroup& group,
                                              const std::vector<OrientedBox>& boxes,
                                              const HarnessConfig& config,
-                                             const SimulationOptions& options,
+                                             const SimulationOptions& options, int threads,
                                              std::vector<std::string>* problems) {
   const auto t0 = std::chrono::steady_clock::now();
   const ToleranceConfig& tc = *config.tolerances;
@@ -138,8 +245,7 @@ std::vector<CableTolerance> NetworkTolerance(const RelaxedFile& f, const RelaxGr
   const NetworkSpec spec = GroupNetworkSpec(f.drawing, group, boxes, config, &setups);
   Layout lay = QuantityLayout(tc);
   for (size_t b = 0; b < spec.branches.size(); ++b)
-    AddClips(spec.branches[b].supports, spec.branches[b].length, static_cast<int>(b), tc,
-             spec.branches[b].name, &lay, problems);
+    AddClips(spec, static_cast<int>(b), tc, &lay, problems);
   // Nominal and varied set-ups at one of the relax's levels: their difference is the
   // tolerance's, the level's own error cancels (how large it is is reported).
   NetworkOptions o = PlanNetworkRelax(spec, options).options;
@@ -158,17 +264,27 @@ std::vector<CableTolerance> NetworkTolerance(const RelaxedFile& f, const RelaxGr
                         nominal.summary.message + "): not varied");
     return {};
   }
-  auto solve = [&](const Eigen::VectorXd& eps, std::vector<Polyline>* shapes, std::string* why) {
+  auto varied = [&](const Eigen::VectorXd& eps) {
     NetworkSpec v = VariedNetworkSpec(spec, Entry(eps, lay.length, tc.length),
                                       Entry(eps, lay.stiffness, tc.bending_stiffness),
                                       Entry(eps, lay.density, tc.linear_density));
     for (size_t i = 0; i < lay.clips.size(); ++i) {
       const Layout::Clip& c = lay.clips[i];
       v.branches[static_cast<size_t>(c.branch)].supports[static_cast<size_t>(c.support)].s +=
-          eps[lay.base + static_cast<int>(i)] * c.tolerance;
+          c.Shift(eps[lay.base + static_cast<int>(i)]);
     }
+    return v;
+  };
+  auto solve = [&](const Eigen::VectorXd& eps, const Eigen::VectorXd& from,
+                   const std::vector<Polyline>& start, std::vector<Polyline>* shapes,
+                   std::string* why) {
+    const NetworkSpec v = varied(eps), u = varied(from);
     NetworkOptions warm = o;
-    warm.initial_routes = nominal.branches;
+    for (size_t b = 0; b < v.branches.size(); ++b)
+      warm.initial_routes.push_back(RemappedStart(start[b], u.branches[b].supports,
+                                                  u.branches[b].length, v.branches[b].supports,
+                                                  v.branches[b].length));
+    // The nominal twist (read at the same relative arc length): close enough for a start.
     warm.initial_normals = nominal.element_normals;
     NetworkSolution s = SolveNetwork(v, warm);
     if (!s.converged()) {
@@ -178,7 +294,7 @@ std::vector<CableTolerance> NetworkTolerance(const RelaxedFile& f, const RelaxGr
     *shapes = std::move(s.branches);
     return true;
   };
-  const ToleranceSearch search = SearchToleranceBox(lay.k(), nominal.branches, solve);
+  const ToleranceSearch search = SearchToleranceBox(lay.k(), nominal.branches, solve, threads);
   std::vector<CableTolerance> out;
   for (size_t b = 0; b < group.cables.size(); ++b) {
     const int branch = static_cast<int>(b);
@@ -221,27 +337,38 @@ NetworkSpec VariedNetworkSpec(const NetworkSpec& spec, double length, double sti
 
 CableTolerance SingleCableTolerance(const CableRelaxation& nominal, const ToleranceConfig& tc,
                                     const SimulationOptions& options,
-                                    std::vector<std::string>* problems) {
+                                    std::vector<std::string>* problems, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
   const RodSpec& spec = nominal.setup.spec;
   Layout lay = QuantityLayout(tc);
-  AddClips(spec.supports, spec.length, 0, tc, nominal.setup.name, &lay, problems);
+  NetworkSpec alone;  // the cable as a network of one branch, free or held at its ends
+  alone.branches.resize(1);
+  alone.branches[0].name = nominal.setup.name;
+  alone.branches[0].length = spec.length;
+  alone.branches[0].supports = spec.supports;
+  AddClips(alone, 0, tc, &lay, problems);
   CableTolerance ct;
   ct.cable = nominal.setup.cable;
   ct.name = nominal.setup.name;
   ct.quantities = lay.k();
   ListClips(lay, 0, spec.supports, nominal.setup.support_origin, &ct);
   const Polyline& start = nominal.result.solution.centerline;
-  auto solve = [&](const Eigen::VectorXd& eps, std::vector<Polyline>* shapes, std::string* why) {
+  auto varied = [&](const Eigen::VectorXd& eps) {
     RodSpec v = VariedSpec(spec, Entry(eps, lay.length, tc.length),
                            Entry(eps, lay.stiffness, tc.bending_stiffness),
                            Entry(eps, lay.density, tc.linear_density));
     for (size_t i = 0; i < lay.clips.size(); ++i)
       v.supports[static_cast<size_t>(lay.clips[i].support)].s +=
-          eps[lay.base + static_cast<int>(i)] * lay.clips[i].tolerance;
+          lay.clips[i].Shift(eps[lay.base + static_cast<int>(i)]);
+    return v;
+  };
+  auto solve = [&](const Eigen::VectorXd& eps, const Eigen::VectorXd& from,
+                   const std::vector<Polyline>& shape, std::vector<Polyline>* shapes,
+                   std::string* why) {
+    const RodSpec v = varied(eps), u = varied(from);
     RodSimulator sim(options);
-    // From the nominal shape: the same branch, varied.
-    SimulationResult r = sim.Simulate(v, &start);
+    const Polyline begin = RemappedStart(shape[0], u.supports, u.length, v.supports, v.length);
+    SimulationResult r = sim.Simulate(v, &begin);
     if (!r.converged) {
       *why = r.solution.summary.message;
       return false;
@@ -249,7 +376,7 @@ CableTolerance SingleCableTolerance(const CableRelaxation& nominal, const Tolera
     shapes->assign(1, std::move(r.solution.centerline));
     return true;
   };
-  const ToleranceSearch search = SearchToleranceBox(lay.k(), {start}, solve);
+  const ToleranceSearch search = SearchToleranceBox(lay.k(), {start}, solve, threads);
   MeasureCases(search, 0, start, 10 * options.accuracy,
                [&](const Eigen::VectorXd& eps) { return Describe(lay, tc, 0, eps); }, &ct);
   ct.seconds = Seconds(t0);
@@ -257,7 +384,7 @@ CableTolerance SingleCableTolerance(const CableRelaxation& nominal, const Tolera
 }
 
 void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options,
-                      RelaxedFile* f) {
+                      RelaxedFile* f, int threads) {
   if (!config.tolerances) return;
   FileTolerance ft;
   ft.config = *config.tolerances;
@@ -283,7 +410,7 @@ void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& opti
       continue;
     }
     try {
-      for (CableTolerance& ct : NetworkTolerance(*f, g, boxes, config, options, &ft.problems))
+      for (CableTolerance& ct : NetworkTolerance(*f, g, boxes, config, options, threads, &ft.problems))
         ft.cables.push_back(std::move(ct));
     } catch (const std::exception& e) {
       ft.problems.push_back("tolerances: network " + GroupLabel(f->drawing, g) + ": " + e.what());
@@ -296,7 +423,7 @@ void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& opti
                             "': not relaxed, not varied");
       continue;
     }
-    CableTolerance ct = SingleCableTolerance(*f->cables[i], ft.config, options, &ft.problems);
+    CableTolerance ct = SingleCableTolerance(*f->cables[i], ft.config, options, &ft.problems, threads);
     ct.cable = static_cast<int>(i);
     ft.cables.push_back(std::move(ct));
   }

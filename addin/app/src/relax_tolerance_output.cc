@@ -17,6 +17,7 @@ json::Json CaseJson(const ToleranceCase& c) {
           {"linear_density", c.linear_density},
           {"clip_shift", c.clip_shift},
           {"converged", c.converged},
+          {"buildable", c.buildable},
           {"excursion", c.excursion},
           {"s", c.s},
           {"point", json::ToJson(c.point)}};
@@ -35,7 +36,8 @@ json::Json CableToleranceToJson(const CableTolerance& t) {
   for (const ToleranceCase& c : t.interior) interior.push_back(CaseJson(c));
   for (size_t i = 0; i < t.clip_s.size(); ++i)
     clips.push_back({{"s", t.clip_s[i]},
-                     {"tolerance", t.clip_tolerance[i]},
+                     {"shift_min", t.clip_range[i][0]},
+                     {"shift_max", t.clip_range[i][1]},
                      {"origin", t.clip_origin[i]}});
   json::Json j = {
       {"corners", corners},
@@ -52,7 +54,10 @@ json::Json CableToleranceToJson(const CableTolerance& t) {
       {"meaning",
        "the cable solved at the corners of its tolerance box from the nominal shape: signed "
        "fractions of length, bending stiffness (EI and GJ) and linear density, and clip_shift "
-       "[m], where on the cable each support of clip_positions holds it (+ = further along); "
+       "[m], where on the cable each support of clip_positions holds it (+ = further along, "
+       "within [shift_min, shift_max]: the tolerance, less where the cable to a neighbour is "
+       "short or nearly taut); buildable false = the set-up cannot exist (a stretch shorter "
+       "than its supports' distance), not a gap in the envelope; "
        "corner_selection 'all' = every corner, 'sensitivity' = the worst corners of the "
        "linearised shape (more than 6 quantities); a network (its cables listed in 'network') "
        "varies as one, solved at 'elements' elements, 'resolution_error' [m] from its refined "
@@ -95,15 +100,22 @@ std::vector<std::string> ToleranceLines(const FileTolerance& t) {
                           : std::to_string(c.corners.size()) + " worst corners of 2^" +
                                 std::to_string(c.quantities) + " by sensitivity";
     if (!c.network.empty()) how += " of its network";
-    // A corner that could not be solved leaves the envelope open on its side: said, with why.
-    int unsolved = 0;
-    std::string first_why;
+    // A set-up that could not be solved leaves the envelope open on its side; one that cannot
+    // be built is no harness at all. Both said, with the first reason.
+    int unsolved = 0, unbuildable = 0;
+    std::string unsolved_why, unbuildable_why;
     for (const auto* list : {&c.corners, &c.interior})
-      for (const ToleranceCase& k : *list)
-        if (!k.converged && unsolved++ == 0) first_why = k.why;
+      for (const ToleranceCase& k : *list) {
+        if (k.converged) continue;
+        if (!k.buildable && unbuildable++ == 0) unbuildable_why = k.why;
+        if (k.buildable && unsolved++ == 0) unsolved_why = k.why;
+      }
+    if (unbuildable > 0)
+      how += ", " + std::to_string(unbuildable) + " set-ups cannot be built (first: " +
+             unbuildable_why + ")";
     if (unsolved > 0)
       how += ", " + std::to_string(unsolved) + " set-ups NOT SOLVED (the envelope may be larger; " +
-             "first: " + first_why + ")";
+             "first: " + unsolved_why + ")";
     std::snprintf(buf, sizeof buf,
                   "tolerance: %s: max excursion %.2f mm at s=%.0f mm (length %+.3g%%, EI %+.3g%%, "
                   "density %+.3g%%%s), %s, %zu interior checks %s, %.3f s",

@@ -6,6 +6,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/parallel_for.h"
 #include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/core/solver/tolerance_corners.h"
 
@@ -53,30 +55,72 @@ double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b, double* t) {
 }  // namespace
 
 ToleranceSearch SearchToleranceBox(int k, const std::vector<Polyline>& nominal,
-                                   const ToleranceSolver& solve) {
+                                   const ToleranceSolver& solve, int threads) {
   ToleranceSearch out;
-  auto run = [&solve](const Eigen::VectorXd& eps) {
+  // One solve from `start` at `from`; false (and why) when it failed or cannot be built.
+  auto attempt = [&solve](const Eigen::VectorXd& eps, const Eigen::VectorXd& from,
+                          const std::vector<Polyline>& start, ToleranceOutcome* o) {
+    o->shapes.clear();
+    try {
+      o->converged = solve(eps, from, start, &o->shapes, &o->why);
+    } catch (const InvalidInput& e) {
+      o->converged = false;
+      o->buildable = false;
+      o->why = e.what();
+    } catch (const std::exception& e) {
+      o->converged = false;
+      o->why = e.what();
+    }
+    return o->converged;
+  };
+  auto run = [&](const Eigen::VectorXd& eps) {
     ToleranceOutcome o;
     o.eps = eps;
-    try {
-      o.converged = solve(eps, &o.shapes, &o.why);
-    } catch (const std::exception& e) {
-      o.converged = false;
-      o.why = e.what();
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(eps.size());
+    if (attempt(eps, zero, nominal, &o) || !o.buildable) return o;
+    const std::string direct = o.why;
+    for (int steps : {2, 4}) {
+      std::vector<Polyline> at = nominal;
+      Eigen::VectorXd from = zero;
+      bool ok = true;
+      for (int i = 1; i <= steps && ok; ++i) {
+        const Eigen::VectorXd to = eps * (static_cast<double>(i) / steps);
+        ok = attempt(to, from, at, &o);
+        if (ok) {
+          at = o.shapes;
+          from = to;
+        }
+      }
+      if (ok) return o;
+      if (!o.buildable) return o;
     }
-    if (!o.converged) o.shapes.clear();
+    o.why = direct + " (also in 2 and 4 steps from the nominal shape)";
+    o.shapes.clear();
     return o;
+  };
+  // Every set-up on its own thread; results by index, so the threads change nothing.
+  auto run_all = [&](const std::vector<Eigen::VectorXd>& list) {
+    std::vector<ToleranceOutcome> done(list.size());
+    ParallelFor(static_cast<int>(list.size()), threads,
+                [&](int i) { done[static_cast<size_t>(i)] = run(list[static_cast<size_t>(i)]); });
+    return done;
   };
   std::vector<Eigen::VectorXd> corners;
   if (k <= kExhaustiveQuantities) {
     corners = AllCorners(k);
   } else {
     out.all_corners = false;
+    std::vector<Eigen::VectorXd> probes;
+    for (int q = 0; q < k; ++q) {
+      probes.push_back(Eigen::VectorXd::Unit(k, q));
+      probes.push_back(-Eigen::VectorXd::Unit(k, q));
+    }
+    const std::vector<ToleranceOutcome> probed = run_all(probes);
+    out.sensitivity_solves = static_cast<int>(probes.size());
     std::vector<Eigen::Matrix3Xd> sensitivity;
     for (int q = 0; q < k; ++q) {
-      const Eigen::VectorXd e = Eigen::VectorXd::Unit(k, q);
-      const ToleranceOutcome plus = run(e), minus = run(-e);
-      out.sensitivity_solves += 2;
+      const ToleranceOutcome& plus = probed[static_cast<size_t>(2 * q)];
+      const ToleranceOutcome& minus = probed[static_cast<size_t>(2 * q + 1)];
       // Central difference; one-sided where one side failed; nothing known where both did
       // (its corners are then chosen by the other quantities alone).
       if (plus.converged && minus.converged)
@@ -86,19 +130,25 @@ ToleranceSearch SearchToleranceBox(int k, const std::vector<Polyline>& nominal,
       else if (minus.converged)
         sensitivity.push_back(Displacement(nominal, nominal, minus.shapes));
       else
-        sensitivity.push_back(Eigen::Matrix3Xd::Zero(3, kShapeSamples * static_cast<Eigen::Index>(nominal.size())));
+        sensitivity.push_back(Eigen::Matrix3Xd::Zero(
+            3, kShapeSamples * static_cast<Eigen::Index>(nominal.size())));
     }
     corners = WorstCorners(sensitivity, kChosenCorners);
   }
-  for (const Eigen::VectorXd& eps : corners) out.corners.push_back(run(eps));
   // Fixed seed: every run and thread count solves the same interior set-ups.
   std::mt19937 rng(25);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::VectorXd> inside;
   for (int i = 0; i < kInteriorChecks && k > 0; ++i) {
     Eigen::VectorXd eps(k);
     for (int q = 0; q < k; ++q) eps[q] = u(rng);
-    out.interior.push_back(run(eps));
+    inside.push_back(eps);
   }
+  std::vector<Eigen::VectorXd> all = corners;
+  all.insert(all.end(), inside.begin(), inside.end());
+  std::vector<ToleranceOutcome> solved = run_all(all);
+  out.corners.assign(solved.begin(), solved.begin() + static_cast<std::ptrdiff_t>(corners.size()));
+  out.interior.assign(solved.begin() + static_cast<std::ptrdiff_t>(corners.size()), solved.end());
   return out;
 }
 
@@ -152,6 +202,7 @@ void MeasureCases(const ToleranceSearch& search, int branch, const Polyline& nom
     ToleranceCase c = describe(o.eps);
     c.converged = o.converged;
     c.why = o.why;
+    c.buildable = o.buildable;
     if (o.converged) {
       c.centreline = Uniform(o.shapes[static_cast<size_t>(branch)], kShapeSamples);
       const CurveExcursion ex = MeasureExcursion(nominal, c.centreline);

@@ -312,7 +312,8 @@ int RunRelax(const RelaxArgs& a) {
     RunFileMotion(ConfigOf(f, config), options_for(f), &f);  // the harness.json motion, if any
     if (f.motion)
       for (const std::string& line : MotionLines(*f.motion)) bar.PrintLine(stdout, f.stem + ": " + line);
-    RunFileTolerance(ConfigOf(f, config), options_for(f), &f);  // harness.json tolerances, if any
+    // harness.json tolerances, if any: one file at a time, its set-ups on every worker
+    RunFileTolerance(ConfigOf(f, config), options_for(f), &f, ResolveJobs(a.jobs, 1 << 20));
     if (f.tolerance)
       for (const std::string& line : ToleranceLines(*f.tolerance)) bar.PrintLine(stdout, f.stem + ": " + line);
   }

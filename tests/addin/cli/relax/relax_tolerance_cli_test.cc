@@ -1,7 +1,7 @@
 // `cablefit relax --config` with tolerances on a network: the branched-tubes sample (three
 // cables meeting at a breakout) varies as one network, and each corner's excursion is what the
 // whole harness relaxed on its own with that length gives; a fixing's place on a cable solved
-// alone (the legacy harness's hose clip) is varied by the tolerance asked.
+// alone (the legacy harness's hose clip) is varied as far as the hose's slack allows.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,7 +70,7 @@ TEST(RelaxToleranceCli, ANetworkVariesAsOneAndItsCornersAreTheHarnessRelaxedThat
   }
 }
 
-TEST(RelaxToleranceCli, TheHoseClipIsShiftedAlongTheHoseByTheToleranceAsked) {
+TEST(RelaxToleranceCli, TheHoseClipIsShiftedAlongTheHoseAsFarAsItsSlackAllows) {
   const fs::path dir = testing::FreshTempDir("relax_tolerance_clip");
   const fs::path sample = testing::SourceDir() / "samples/harness/legacy_harness.step";
   Json config = json::ReadJsonFile((testing::SourceDir() / "samples/harness/harness.json").string());
@@ -82,14 +82,26 @@ TEST(RelaxToleranceCli, TheHoseClipIsShiftedAlongTheHoseByTheToleranceAsked) {
   const Json env = Relax(sample, config.dump(), dir / "clip", &text);
   const Json& hose = testing::CableNamed(env, "hose")["tolerance"];
   ASSERT_EQ(hose["clip_positions"].size(), 1u) << hose.dump();
-  EXPECT_EQ(hose["clip_positions"][0]["tolerance"].get<double>(), 0.01);
-  EXPECT_EQ(hose["clip_positions"][0]["origin"].get<std::string>(), "harness.json");
+  // The hose runs nearly straight on either side of its clip: less than the 10 mm asked
+  // either way, said in tolerance_problems.
+  const Json& clip = hose["clip_positions"][0];
+  EXPECT_EQ(clip["origin"].get<std::string>(), "harness.json");
+  const double lo = clip["shift_min"].get<double>(), hi = clip["shift_max"].get<double>();
+  EXPECT_LT(lo, -1e-3);
+  EXPECT_GE(lo, -0.01);
+  EXPECT_GT(hi, 1e-3);
+  EXPECT_LE(hi, 0.01);
+  bool said = false;
+  for (const Json& p : env["tolerance_problems"])
+    said = said || p.get<std::string>().find("cable 'hose': the support at") != std::string::npos;
+  EXPECT_TRUE(said) << env["tolerance_problems"].dump();
   ASSERT_EQ(hose["corners"].size(), 2u);
   for (const Json& c : hose["corners"]) {
     ASSERT_TRUE(c["converged"].get<bool>());
     ASSERT_EQ(c["clip_shift"].size(), 1u);
-    EXPECT_NEAR(std::abs(c["clip_shift"][0].get<double>()), 0.01, 1e-15);
-    EXPECT_GT(c["excursion"].get<double>(), 1e-4);  // a fixing 10 mm off moves the hose
+    const double shift = c["clip_shift"][0].get<double>();
+    EXPECT_TRUE(shift == lo || shift == hi) << shift;
+    EXPECT_GT(c["excursion"].get<double>(), 1e-4);  // a fixing millimetres off moves the hose
   }
   EXPECT_NE(text.find("tolerance: hose: max excursion"), std::string::npos) << text;
   EXPECT_NE(text.find("clips "), std::string::npos) << text;

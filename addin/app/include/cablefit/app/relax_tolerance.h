@@ -10,6 +10,8 @@
 // says whether any went further than the corners.
 #pragma once
 
+#include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,7 +28,10 @@ struct ToleranceCase {
   double length = 0.0, bending_stiffness = 0.0, linear_density = 0.0;  ///< signed fractions
   std::vector<double> clip_shift;  ///< [m] per CableTolerance::clip_s, + = further along
   bool converged = false;
-  std::string why;  ///< why it was not solved (a set-up that cannot exist, a solver failure)
+  /// False when the set-up cannot exist (a stretch shorter than its supports' distance): a
+  /// harness that cannot be built, outside the envelope rather than missing from it.
+  bool buildable = true;
+  std::string why;  ///< why it was not solved (cannot be built, or the solver's failure)
   /// [m] the farthest any point of the varied cable is from the nominal cable (as a curve:
   /// how far outside the nominal place it can be, whatever slides along it)
   double excursion = 0.0;
@@ -39,9 +44,12 @@ struct CableTolerance {
   int cable = 0;
   std::string name;
   /// The supports between the cable's ends whose place on it is varied: nominal arc length
-  /// [m], tolerance used [m] (less than asked where a neighbouring support or an end is
-  /// nearer: at most 45 % of the gap), and where the support comes from.
-  std::vector<double> clip_s, clip_tolerance;
+  /// [m], the shifts at the box's corners [m] (-back, +ahead: the tolerance asked, less where
+  /// the cable to a neighbouring support is short (45 % of it at most) or nearly taut (90 % of
+  /// its slack at the shortest length, shared with a neighbour that moves too)), and where the
+  /// support comes from.
+  std::vector<double> clip_s;
+  std::vector<std::array<double, 2>> clip_range;
   std::vector<std::string> clip_origin;
   std::vector<ToleranceCase> corners, interior;
   int worst_corner = -1;        ///< index into corners, -1 when none converged
@@ -76,15 +84,17 @@ RodSpec VariedSpec(const RodSpec& spec, double length, double stiffness, double 
 NetworkSpec VariedNetworkSpec(const NetworkSpec& spec, double length, double stiffness,
                               double density);
 
-/// The tolerance envelope of one cable solved alone, from its nominal relaxation.
+/// The tolerance envelope of one cable solved alone, from its nominal relaxation; its set-ups
+/// on up to `threads` threads (the result does not depend on how many).
 CableTolerance SingleCableTolerance(const CableRelaxation& nominal, const ToleranceConfig& config,
                                     const SimulationOptions& options,
-                                    std::vector<std::string>* problems);
+                                    std::vector<std::string>* problems, int threads = 1);
 
 struct RelaxedFile;
-/// Runs the envelope on every relaxed cable of `f`, alone or with its network.
+/// Runs the envelope on every relaxed cable of `f`, alone or with its network, each one's
+/// set-ups on up to `threads` threads.
 void RunFileTolerance(const HarnessConfig& config, const SimulationOptions& options,
-                      RelaxedFile* f);
+                      RelaxedFile* f, int threads);
 
 json::Json CableToleranceToJson(const CableTolerance& t);
 /// One line per varied cable (and per problem) for stdout and the report.
