@@ -7,17 +7,27 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/parallel_for.h"
 #include "crash_probe.h"
 #include "occt_tube.h"
 
 namespace cablefit {
+namespace {
+
+// Sweeps a helper takes at least before another one is started (each costs ~0.15 s to start).
+constexpr size_t kSweepsPerHelper = 8;
+
+}  // namespace
 
 TopoDS_Shape MakeCableSolid(const CableSweep& sweep) {
   return sweep.flat ? MakeFlatStripSolid(sweep.spine, sweep.guide, *sweep.flat)
@@ -164,7 +174,28 @@ std::vector<TubeSweepResult> MakeTubeSolidsInChild(const std::vector<CableSweep>
                                                    double max_seconds) {
   std::string why;
   bool started = false;
-  if (sweeps.size() > 1) {
+  // Many sweeps: one helper per core, each taking every n-th sweep (long and short cables
+  // mixed alike); a sweep's tube does not depend on its helper, so neither does the result.
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int helpers = std::min(cores, static_cast<int>(sweeps.size() / kSweepsPerHelper));
+  if (helpers > 1) {
+    std::vector<std::optional<std::vector<TubeSweepResult>>> parts(static_cast<size_t>(helpers));
+    ParallelFor(helpers, helpers, [&](int h) {
+      std::vector<CableSweep> mine;
+      for (size_t i = static_cast<size_t>(h); i < sweeps.size(); i += static_cast<size_t>(helpers))
+        mine.push_back(sweeps[i]);
+      std::string part_why;
+      bool part_started = false;
+      parts[static_cast<size_t>(h)] = SweepBatch(mine, max_seconds, &part_why, &part_started);
+    });
+    if (std::all_of(parts.begin(), parts.end(), [](const auto& p) { return p.has_value(); })) {
+      std::vector<TubeSweepResult> results(sweeps.size());
+      for (size_t i = 0; i < sweeps.size(); ++i)
+        results[i] = std::move((*parts[i % static_cast<size_t>(helpers)])[i / static_cast<size_t>(helpers)]);
+      return results;
+    }
+    // A helper died: the slow, sure way below for all of them.
+  } else if (sweeps.size() > 1) {
     if (auto all = SweepBatch(sweeps, max_seconds, &why, &started)) return *std::move(all);
   }
   // One helper each: a batch that died on one of the sweeps costs only that one. No helper at
