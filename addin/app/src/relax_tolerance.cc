@@ -153,16 +153,21 @@ void AddClips(const NetworkSpec& net, int b, const ToleranceConfig& tc, Layout* 
     c.ahead = std::min(tc.clip_position, Room(share, sp.position, after, tc));
     if (c.back < tc.clip_position || c.ahead < tc.clip_position) {
       // Why, side by side: short (the share of the shorter cable) or nearly taut (its slack).
-      auto reason = [&](double room) { return room < share ? "nearly taut" : "short"; };
+      auto reason = [&](double room) { return room < share ? "is nearly taut" : "is short"; };
       std::string why;
-      if (c.back < tc.clip_position) why = std::string("before it ") + reason(c.back);
+      if (c.back < tc.clip_position) why = std::string("the cable before it ") + reason(c.back);
       if (c.ahead < tc.clip_position)
-        why += (why.empty() ? "" : ", ") + std::string("after it ") + reason(c.ahead);
+        why += (why.empty() ? "the cable " : ", ") + std::string("after it ") + reason(c.ahead);
       char buf[400];
-      std::snprintf(buf, sizeof buf,
-                    "tolerances: cable '%s': the support at s=%.0f mm is shifted by -%.1f/+%.1f "
-                    "mm only: the cable %s",
-                    br.name.c_str(), 1e3 * sp.s, 1e3 * c.back, 1e3 * c.ahead, why.c_str());
+      if (c.back <= 0 && c.ahead <= 0)
+        std::snprintf(buf, sizeof buf,
+                      "tolerances: cable '%s': the support at s=%.0f mm is not shifted: %s",
+                      br.name.c_str(), 1e3 * sp.s, why.c_str());
+      else
+        std::snprintf(buf, sizeof buf,
+                      "tolerances: cable '%s': the support at s=%.0f mm is shifted by -%.1f/+%.1f "
+                      "mm only: %s",
+                      br.name.c_str(), 1e3 * sp.s, 1e3 * c.back, 1e3 * c.ahead, why.c_str());
       problems->push_back(buf);
     }
     if (c.back <= 0 && c.ahead <= 0) continue;

@@ -159,7 +159,7 @@ TEST(RelaxTolerance, AFixingAtTheEndOfATautStretchMovesOnlyAwayFromIt) {
   EXPECT_NEAR(t.clip_range[1][0], -0.01, 1e-12);
   EXPECT_NEAR(t.clip_range[1][1], 0.01, 1e-12);
   ASSERT_EQ(problems.size(), 1u);
-  EXPECT_NE(problems[0].find("shifted by -0.0/+10.0 mm only: the cable before it nearly taut"),
+  EXPECT_NE(problems[0].find("shifted by -0.0/+10.0 mm only: the cable before it is nearly taut"),
             std::string::npos)
       << problems[0];
   // Every corner is a harness that can be built, and is solved.
