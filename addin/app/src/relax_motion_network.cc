@@ -7,13 +7,6 @@
 #include "cablefit/core/network/network_sweep.h"
 
 namespace cablefit::addin {
-namespace {
-
-// Elements of a network's sweep at most (unless the relax's first level has more): a 100-pose
-// sweep of a 30-branch harness in a few seconds.
-constexpr int kSweepElements = 2000;
-
-}  // namespace
 
 std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const RelaxGroup& group,
                                                  const std::map<int, std::vector<int>>& moving,
@@ -45,13 +38,12 @@ std::vector<CableMotion> SweepNetworkGroupMotion(const RelaxedFile& f, const Rel
     for (size_t k = 0; k < group.obstacles.size(); ++k)
       if (std::count(moving_solids.begin(), moving_solids.end(), group.obstacles[k]) > 0)
         parts.obstacles.push_back(static_cast<int>(k));
-    // Every pose at one of the relax's levels, the finest within kSweepElements (a warm solve
-    // costs a few Newton iterations there); how far it is from the refined relax is measured
-    // at the drawn pose and reported.
+    // Every pose at one of the relax's levels (RepeatedSolveLevel); how far it is from the
+    // refined relax is measured at the drawn pose and reported.
     NetworkSweepOptions so;
     so.network = PlanNetworkRelax(spec, options).options;
     so.network.refinement = RepeatedSolveLevel(
-        f.cables[static_cast<size_t>(group.cables[0])]->result.level_elements, kSweepElements);
+        f.cables[static_cast<size_t>(group.cables[0])]->result.level_elements);
     so.jump_floor = 10 * options.accuracy;
     const NetworkSweepSummary sweep =
         SweepNetwork(spec, parts, [&mc](double p) { return mc.At(p); }, q, so);

@@ -193,9 +193,10 @@ NetworkSimulation SimulateWithoutGravity(const NetworkSpec& spec, const NetworkO
   return SimulateNetwork(weightless, plan, opt);
 }
 
-int RepeatedSolveLevel(const std::vector<int>& level_elements, int max_elements) {
+int RepeatedSolveLevel(const std::vector<int>& level_elements) {
+  constexpr int kMaxElements = 2000;
   int level = 0;
-  for (size_t k = 1; k < level_elements.size() && level_elements[k] <= max_elements; ++k)
+  for (size_t k = 1; k < level_elements.size() && level_elements[k] <= kMaxElements; ++k)
     level = static_cast<int>(k);
   return level;
 }

@@ -14,8 +14,6 @@
 namespace cablefit::addin {
 namespace {
 
-// Elements of a network's repeated solves at most (the motion sweep's figure).
-constexpr int kToleranceElements = 2000;
 // A fixing moves at most this share of the way to its neighbouring support or cable end: the
 // supports keep their order and the cable between them some length.
 constexpr double kClipShiftShare = 0.45;
@@ -255,7 +253,7 @@ std::vector<CableTolerance> NetworkTolerance(const RelaxedFile& f, const RelaxGr
   // tolerance's, the level's own error cancels (how large it is is reported).
   NetworkOptions o = PlanNetworkRelax(spec, options).options;
   const CableRelaxation& first = *f.cables[static_cast<size_t>(group.cables[0])];
-  o.refinement = RepeatedSolveLevel(first.result.level_elements, kToleranceElements);
+  o.refinement = RepeatedSolveLevel(first.result.level_elements);
   for (int c : group.cables)
     o.initial_routes.push_back(f.cables[static_cast<size_t>(c)]->result.solution.centerline);
   NetworkSolution nominal = SolveNetwork(spec, o);

@@ -53,9 +53,11 @@ struct NetworkRelaxPlan {
 NetworkRelaxPlan PlanNetworkRelax(const NetworkSpec& spec, const SimulationOptions& options);
 
 /// The refinement level (index into a relax's `level_elements`) at which a network is solved
-/// many times over (motion poses, tolerance corners): the finest with at most `max_elements`
-/// elements, else the first. The relax's own levels, so its first level's start is known good.
-int RepeatedSolveLevel(const std::vector<int>& level_elements, int max_elements);
+/// many times over (motion poses, tolerance corners): the finest with at most 2000 elements
+/// (a warm solve costs a few Newton iterations there: a 100-pose sweep of a 30-branch harness in
+/// a few seconds), else the first. The relax's own levels, so its first level's start is known
+/// good.
+int RepeatedSolveLevel(const std::vector<int>& level_elements);
 
 /// The network without gravity on one level (`options` at refinement 0), for the springback/sag
 /// split: it needs no extrapolated accuracy. Started from `loaded`, the node centrelines of the
