@@ -175,9 +175,13 @@ Polyline ForWriting(const Polyline& relaxed, double diameter, double per_diamete
   return SampleCenterline(relaxed, UniformArcLengths(length, n));
 }
 
+// Corners rounded to about two diameters first (no cable bends tighter): a B-spline through a
+// drawn polyline's corner (KBL centre curves of degree 1) needs hundreds of knots to stay within
+// the writer's tolerance, and the sweep along it fails (a 183-segment harness: 100 s, then a
+// second pass).
 Polyline AsDrawnForWriting(const Polyline& drawn, double diameter, double per_diameter) {
   try {
-    return ForWriting(CleanRoute(drawn), diameter, per_diameter);
+    return ForWriting(RoundedRoute(CleanRoute(drawn), 2 * diameter), diameter, per_diameter);
   } catch (const InvalidInput&) {
     return drawn;  // the writer reports what is wrong with it
   }

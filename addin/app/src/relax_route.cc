@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 
@@ -56,6 +57,41 @@ Polyline CleanRoute(const Polyline& drawn) {
   route.points.col(0) = raw.points.col(0);
   route.points.col(n - 1) = raw.points.col(raw.size() - 1);
   return route;
+}
+
+Polyline RoundedRoute(const Polyline& route, double width) {
+  CABLEFIT_REQUIRE(route.size() >= 2 && width > 0, "RoundedRoute needs a route and a width > 0");
+  const double length = route.s[route.size() - 1];
+  const double sigma = 0.5 * width;
+  // Eight samples per sigma resolve the kernel; at most 200000 keep a long thin cable cheap.
+  const Eigen::Index n = std::clamp<Eigen::Index>(
+      static_cast<Eigen::Index>(std::ceil(8 * length / sigma)) + 1, 2, 200000);
+  const double h = length / static_cast<double>(n - 1);
+  Eigen::Matrix3Xd fine(3, n);  // 3 x n [m]
+  for (Eigen::Index i = 0; i < n; ++i) fine.col(i) = RoutePoint(route, h * static_cast<double>(i));
+  const Eigen::Index reach = static_cast<Eigen::Index>(std::ceil(3 * sigma / h));
+  std::vector<double> weight(static_cast<size_t>(reach + 1));
+  for (Eigen::Index k = 0; k <= reach; ++k)
+    weight[static_cast<size_t>(k)] = std::exp(-0.5 * std::pow(static_cast<double>(k) * h / sigma, 2));
+  // Beyond an end the route continues as its point reflection through that end.
+  auto at = [&](Eigen::Index i) -> Vec3 {
+    if (i < 0) return 2 * fine.col(0) - fine.col(std::min(-i, n - 1));
+    if (i >= n) return 2 * fine.col(n - 1) - fine.col(std::max<Eigen::Index>(2 * (n - 1) - i, 0));
+    return fine.col(i);
+  };
+  Polyline out;
+  out.points.resize(3, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    Vec3 sum = weight[0] * fine.col(i);
+    double total = weight[0];
+    for (Eigen::Index k = 1; k <= reach; ++k) {
+      sum += weight[static_cast<size_t>(k)] * (at(i - k) + at(i + k));
+      total += 2 * weight[static_cast<size_t>(k)];
+    }
+    out.points.col(i) = sum / total;
+  }
+  out.ParameteriseByChords();
+  return out;
 }
 
 Vec3 RoutePoint(const Polyline& route, double s) {

@@ -11,6 +11,12 @@ namespace cablefit::addin {
 /// from 0. Throws InvalidInput when fewer than two distinct points remain.
 Polyline CleanRoute(const Polyline& drawn);  // resampled uniformly, see .cc
 
+/// The route with its corners rounded: positions averaged along the route with a Gaussian of
+/// standard deviation `width` / 2 [m] (odd reflection at the ends, so the ends stay where they
+/// are and a straight route stays straight). A corner becomes a bend of about `width` radius;
+/// a smooth bend of radius R moves by about width^2 / (8 R). Re-parameterised by chords.
+Polyline RoundedRoute(const Polyline& route, double width);
+
 /// Point at arc length `s` [m] (linear between samples; clamped to the route). 3 [m].
 Vec3 RoutePoint(const Polyline& route, double s);
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "cablefit/app/relax_clips.h"
 
@@ -34,6 +35,63 @@ TEST(RelaxRoute, TangentsAreAccurateDespiteUnevenSampling) {
   EXPECT_LT((RouteTangent(route, length) - Vec3::UnitZ()).norm(), 1e-4);
   // Mid-arc: 45 degrees.
   EXPECT_LT((RouteTangent(route, 0.1 + 0.0125 * M_PI) - Vec3(1, 0, 1).normalized()).norm(), 1e-4);
+}
+
+// Radius of the circle through three points (infinite when they are collinear).
+double Circumradius(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double area2 = (b - a).cross(c - a).norm();
+  return area2 > 0 ? (b - a).norm() * (c - b).norm() * (c - a).norm() / (2 * area2)
+                   : std::numeric_limits<double>::infinity();
+}
+
+TEST(RelaxRoute, RoundedRouteTurnsACornerIntoABendOfAboutTheWidth) {
+  // Two legs of 0.1 m meeting at a right angle, as a degree-1 KBL centre curve draws it.
+  Polyline corner;
+  corner.points.resize(3, 3);
+  corner.points << 0, 0.1, 0.1,  //
+      0, 0, 0.1,                 //
+      0, 0, 0;
+  const double width = 0.01;
+  const Polyline rounded = RoundedRoute(CleanRoute(corner), width);
+  // The ends stay, and so do the legs away from the corner.
+  EXPECT_LT((rounded.points.col(0) - Vec3(0, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((rounded.points.col(rounded.size() - 1) - Vec3(0.1, 0.1, 0)).norm(), 1e-12);
+  double tightest = std::numeric_limits<double>::infinity(), off_legs = 0, far_off = 0;
+  for (Eigen::Index i = 1; i + 1 < rounded.size(); ++i) {
+    const Vec3 p = rounded.points.col(i);
+    tightest = std::min(tightest, Circumradius(rounded.points.col(i - 1), p, rounded.points.col(i + 1)));
+    const double to_legs = std::min(std::hypot(p.y(), p.z()) + std::max(0.0, p.x() - 0.1),
+                                    std::hypot(p.x() - 0.1, p.z()) + std::max(0.0, -p.y()));
+    off_legs = std::max(off_legs, to_legs);
+    if ((p - Vec3(0.1, 0, 0)).norm() > 2 * width) far_off = std::max(far_off, to_legs);
+  }
+  EXPECT_GT(tightest, 0.25 * width);  // a bend the writer's spline and sweep can follow
+  EXPECT_LT(off_legs, 0.5 * width);   // still the drawn route, to a fraction of the diameter
+  EXPECT_LT(far_off, 1e-9);           // the Gaussian reaches 3 sigma = 1.5 widths, no further
+}
+
+TEST(RelaxRoute, RoundedRouteLeavesAStraightRouteAndAGentleArcAlmostAlone) {
+  Polyline line;
+  line.points.resize(3, 2);
+  line.points << 0, 0.3, 0, 0.1, 0, -0.2;
+  const Polyline straight = RoundedRoute(CleanRoute(line), 0.02);
+  for (Eigen::Index i = 0; i < straight.size(); ++i) {
+    const Vec3 p = straight.points.col(i);
+    EXPECT_LT(p.cross(Vec3(0.3, 0.1, -0.2).normalized()).norm(), 1e-12);
+  }
+  EXPECT_NEAR(straight.s[straight.size() - 1], std::sqrt(0.14), 1e-12);
+  // The arc of LineThenArc (radius 0.05 m): moved by about width^2 / (8 R) = 0.25 mm.
+  const double width = 0.01;
+  const Polyline route = CleanRoute(LineThenArc());
+  const Polyline rounded = RoundedRoute(route, width);
+  double moved = 0;
+  for (Eigen::Index i = 0; i < rounded.size(); ++i) {
+    double d = 0;
+    NearestArcLength(route, rounded.points.col(i), &d);
+    moved = std::max(moved, d);
+  }
+  EXPECT_LT(moved, 2 * width * width / (8 * 0.05));
+  EXPECT_GT(moved, 0.0);
 }
 
 TEST(RelaxRoute, TransportedNormalsOfAPlanarCurveStayNormalToItsPlane) {
