@@ -207,10 +207,15 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
 
 namespace {
 
-void RenderToPng(const std::string& path, const Scene& scene) {
+RenderOptions PictureOptions() {
   RenderOptions options;
   options.width = 1400;
   options.height = 900;
+  return options;
+}
+
+void RenderToPng(const std::string& path, const Scene& scene) {
+  const RenderOptions options = PictureOptions();
   Image image;
   {
     std::lock_guard lock(RenderMutex());
@@ -227,6 +232,14 @@ std::string FileSafe(const std::string& name) {
 }
 
 }  // namespace
+
+void WarmUpDeviationPictures() noexcept {
+  try {
+    std::lock_guard lock(RenderMutex());
+    WarmUpRenderer(PictureOptions());
+  } catch (...) {  // NOLINT(bugprone-empty-catch): the picture reports what fails
+  }
+}
 
 void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,
                            const HarnessConfig& config) {

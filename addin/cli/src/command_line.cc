@@ -5,6 +5,7 @@
 #include <exception>
 #include <string>
 
+#include "allocator_tuning.h"
 #include "cablefit/app/provenance.h"
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/cancellation.h"
@@ -53,6 +54,7 @@ std::string HelpCommand(CLI::App& app) {
 
 int RunCommandLineWith(int argc, char** argv, std::initializer_list<RegisterCommand> commands) {
   SetCommandLine(argc, argv);  // for the provenance of every output
+  TuneAllocatorForSolves();
   // Named here, not from argv[0], so that usage lines read "cablefit relax", wherever it lives.
   CLI::App app{"cablefit: wiring-harness and hose CAD to physics, and why a simulated cable "
                "does not look like the real one",

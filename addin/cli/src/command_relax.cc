@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <thread>
 #include <set>
 #include <string>
 #include <tuple>
@@ -248,6 +249,12 @@ int RunRelax(const RelaxArgs& a) {
     }
   }
 
+  // The renderer's start-up (OSMesa, llvmpipe compiling its shaders) on a core of its own while
+  // the cables relax; no OpenCASCADE work runs in this process until stage 3 (see cad_mutex).
+  std::jthread warm_up;  // joined on every way out
+  if (a.pictures && std::any_of(files.begin(), files.end(), [](const RelaxedFile& f) { return f.read_ok; }))
+    warm_up = std::jthread(WarmUpDeviationPictures);
+
   // 2. Relax every cable of every input that was read.
   // A job is one group of cables solved together: a single cable, or a network of cables
   // joined at breakouts / near solids they may touch (see relax_network.h).
@@ -317,6 +324,8 @@ int RunRelax(const RelaxArgs& a) {
     if (f.tolerance)
       for (const std::string& line : ToleranceLines(*f.tolerance)) bar.PrintLine(stdout, f.stem + ": " + line);
   }
+
+  if (warm_up.joinable()) warm_up.join();
 
   // 3. Write each input's outputs.
   RunBatch(n, ResolveJobs(a.jobs, n), [&](int i) {

@@ -147,6 +147,36 @@ Image RenderDeviationViews(const Scene& scene, const RenderOptions& options) {
   return Compose({&scene}, layout, options, titles);
 }
 
+void WarmUpRenderer(const RenderOptions& options) {
+  // Everything a harness picture draws: a deviation-coloured tube with a highlighted stretch, a
+  // flat-coloured one, a ghost, a part, a support and a label.
+  Scene scene;
+  scene.title = "warm-up";
+  SceneTube tube;
+  tube.centreline.points.resize(3, 3);
+  tube.centreline.points << 0, 0.1, 0.2, 0, 0.02, 0, 0, -0.03, 0;
+  tube.deviation = Eigen::Vector3d(0, 0.01, 0.002);
+  scene.tubes.push_back(tube);
+  tube.centreline.points.row(1).array() += 0.05;
+  tube.deviation.resize(0);
+  scene.tubes.push_back(tube);
+  scene.highlights.push_back({0, 0.02, 0.08});
+  SceneGhost ghost;
+  ghost.points = scene.tubes[0].centreline.points;
+  ghost.points.row(2).setZero();
+  scene.ghosts.push_back(ghost);
+  SceneSolid part;
+  part.mesh.vertices.resize(3, 3);
+  part.mesh.vertices << 0, 0.02, 0, 0, 0, 0.02, 0, 0, 0;
+  part.mesh.faces.resize(3, 1);
+  part.mesh.faces << 0, 1, 2;
+  scene.solids.push_back(part);
+  SceneSupport clamp;
+  scene.supports.push_back(clamp);
+  scene.labels.push_back({Eigen::Vector3d(0.1, 0.02, -0.03), "warm-up"});
+  RenderDeviationViews(scene, options);
+}
+
 std::vector<Image> RenderDeviationSequence(const std::vector<Scene>& frames,
                                            const RenderOptions& options) {
   std::vector<Image> images;

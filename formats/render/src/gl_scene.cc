@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -81,16 +82,23 @@ GLuint BuildProgram() {
   return program;
 }
 
-// The off-screen context and shader program of this thread, kept for its next picture: making
+// The off-screen context and shader program of the process, kept for its next picture: making
 // them (fresh buffer pages, llvmpipe compiling the shaders) cost more than drawing a frame of a
-// motion sequence. The buffer only grows; a picture uses its top-left corner.
+// motion sequence. The buffer only grows; a picture uses its top-left corner. One per process,
+// not per thread, so that a warm-up on another thread (WarmUpRenderer) serves the pictures.
 struct GlSession {
   std::unique_ptr<OffscreenContext> context;
   GLuint program = 0;
 };
 
+// Held while a picture is drawn: the session's context is current on one thread at a time.
+std::mutex& SessionMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
 GlSession& SessionFor(int width, int height) {
-  static thread_local GlSession session;
+  static GlSession session;
   if (session.context && session.context->width() >= width &&
       session.context->height() >= height) {
     session.context->MakeCurrent();  // released after the last picture
@@ -124,15 +132,32 @@ void AppendSolid(const TriangleMesh& mesh, TubeMesh* out) {
   }
 }
 
+// The picture's resolution along the tubes: a panel shows the scene in at most about 2000
+// supersampled pixels, so 1/8000 of its size is a quarter pixel; a chord of 1/200 of it keeps
+// the colour map's gradients smooth.
+constexpr double kThinTolerance = 1.0 / 8000;
+constexpr double kThinMaxChord = 1.0 / 200;
+
 SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides) {
   SceneMeshes meshes;
+  Eigen::AlignedBox3d box;
+  for (const SceneTube& tube : scene.tubes)
+    for (Eigen::Index i = 0; i < tube.centreline.points.cols(); ++i)
+      if (tube.centreline.points.col(i).allFinite()) box.extend(Eigen::Vector3d(tube.centreline.points.col(i)));
+  const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();  // [m]
   for (const SceneTube& tube : scene.tubes) {
     const Eigen::Index n = tube.centreline.points.cols();
-    std::vector<Rgb> colours(static_cast<std::size_t>(n), tube.flat_colour);
-    if (tube.deviation.size() == n)
-      for (Eigen::Index i = 0; i < n; ++i)
-        colours[static_cast<std::size_t>(i)] = scale.Map(tube.deviation[i] * 1e3);
-    meshes.tubes.Append(BuildTubeMesh(tube.centreline.points, tube.radius, sides, colours));
+    const std::vector<Eigen::Index> kept =
+        size > 0 && tube.centreline.points.allFinite()
+            ? ThinnedIndices(tube.centreline.points, kThinTolerance * size, kThinMaxChord * size)
+            : std::vector<Eigen::Index>();
+    Eigen::Matrix3Xd points(3, static_cast<Eigen::Index>(kept.size()));  // 3 x k [m]
+    std::vector<Rgb> colours(kept.size(), tube.flat_colour);
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      points.col(static_cast<Eigen::Index>(k)) = tube.centreline.points.col(kept[k]);
+      if (tube.deviation.size() == n) colours[k] = scale.Map(tube.deviation[kept[k]] * 1e3);
+    }
+    meshes.tubes.Append(BuildTubeMesh(points, tube.radius, sides, colours));
   }
   for (const ArcHighlight& h : scene.highlights) {
     if (h.tube < 0 || h.tube >= static_cast<int>(scene.tubes.size())) continue;
@@ -260,6 +285,7 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
   }
   Image picture = Image::Filled(width, height, background);
   if (jobs.empty()) return picture;
+  const std::lock_guard lock(SessionMutex());
   GlSession& session = SessionFor(buffer_w, buffer_h);
   struct ReleaseOnExit {
     ~ReleaseOnExit() { OffscreenContext::Release(); }

@@ -1,5 +1,7 @@
 #include "tube_mesh.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <numbers>
 
@@ -135,6 +137,34 @@ Eigen::Matrix3Xd SliceByArcLength(const Eigen::VectorXd& s, const Eigen::Matrix3
   Eigen::Matrix3Xd result(3, static_cast<Eigen::Index>(out.size()));
   for (std::size_t i = 0; i < out.size(); ++i) result.col(static_cast<Eigen::Index>(i)) = out[i];
   return result;
+}
+
+std::vector<Eigen::Index> ThinnedIndices(const Eigen::Matrix3Xd& points, double tolerance,
+                                         double max_length) {
+  const Eigen::Index n = points.cols();
+  std::vector<Eigen::Index> keep;
+  if (n == 0) return keep;
+  keep.push_back(0);
+  Eigen::Index last = 0;
+  // Does the chord from `last` to j stay within tolerance of every point between?
+  auto chord_fits = [&](Eigen::Index j) {
+    const Eigen::Vector3d a = points.col(last), ab = points.col(j) - a;
+    const double len2 = ab.squaredNorm();
+    if (len2 > max_length * max_length) return false;
+    for (Eigen::Index k = last + 1; k < j; ++k) {
+      const Eigen::Vector3d ak = points.col(k) - a;
+      const double w = len2 > 0 ? std::clamp(ak.dot(ab) / len2, 0.0, 1.0) : 0.0;
+      if ((ak - w * ab).squaredNorm() > tolerance * tolerance) return false;
+    }
+    return true;
+  };
+  for (Eigen::Index j = 2; j < n; ++j) {
+    if (chord_fits(j)) continue;
+    last = j - 1;
+    keep.push_back(last);
+  }
+  if (n > 1) keep.push_back(n - 1);
+  return keep;
 }
 
 }  // namespace cablefit::render

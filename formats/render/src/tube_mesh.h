@@ -29,6 +29,14 @@ struct TubeMesh {
 TubeMesh BuildTubeMesh(const Eigen::Matrix3Xd& points, double radius, int sides,
                        const std::vector<Rgb>& colours);
 
+/// Indices of `points` (3 x n [m]) a picture needs: the first and last, and between them as few
+/// as keep every skipped point within `tolerance` [m] of the chord that replaces it and every
+/// chord at most `max_length` [m] long (greedy, in order). A relaxed centre line has a node every
+/// fraction of a millimetre; drawn at picture resolution most of them are invisible, and each
+/// costs llvmpipe a ring of vertices.
+std::vector<Eigen::Index> ThinnedIndices(const Eigen::Matrix3Xd& points, double tolerance,
+                                         double max_length);
+
 /// The part of a polyline with arc length in [s_begin, s_end] (ends interpolated).
 /// `s` n [m] non-decreasing, `points` 3 x n [m]; returns 3 x k [m].
 Eigen::Matrix3Xd SliceByArcLength(const Eigen::VectorXd& s, const Eigen::Matrix3Xd& points,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <thread>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/png_file.h"
@@ -141,6 +142,25 @@ TEST(DeviationViews, SideBySideSharesOneColourScale) {
   EXPECT_LT(ClosestNear(image, bottom_front.Project(large.Point(u)), 2, Viridis(1.0)), kColourTolerance);
   EXPECT_LT(ClosestNear(image, top_front.Project(small.Point(u)), 2, Viridis(5.0 / 15.0)), kColourTolerance);
   EXPECT_GT(ClosestNear(image, top_front.Project(small.Point(u)), 2, Viridis(1.0)), 60.0);
+}
+
+// The renderer's context is one per process: warmed up on another thread, it draws the same
+// picture here as before the warm-up, to the byte.
+TEST(DeviationViews, AWarmUpOnAnotherThreadLeavesThePictureUnchanged) {
+  const Scene scene = testing::SaggingCable{}.Build();
+  RenderOptions options;
+  options.width = 900;
+  options.height = 600;
+  const Image before = RenderDeviationViews(scene, options);
+  std::thread([&] { WarmUpRenderer(options); }).join();
+  const Image after = RenderDeviationViews(scene, options);
+  ASSERT_EQ(before.width, after.width);
+  ASSERT_EQ(before.height, after.height);
+  EXPECT_TRUE(before.pixels == after.pixels);
+  // And a picture drawn on yet another thread, after the warm-up.
+  Image elsewhere;
+  std::thread([&] { elsewhere = RenderDeviationViews(scene, options); }).join();
+  EXPECT_TRUE(before.pixels == elsewhere.pixels);
 }
 
 TEST(DeviationViews, RejectsBadInput) {

@@ -10,6 +10,11 @@
 
 namespace cablefit::addin {
 
+/// Readies the renderer for WriteDeviationPicture (WarmUpRenderer at its picture size) and
+/// swallows what fails: the picture itself reports it. For a thread of its own while the
+/// cables relax.
+void WarmUpDeviationPictures() noexcept;
+
 /// Renders the relaxed cables of `f` (those that failed are drawn grey as drawn) and writes
 /// them as a PNG to `path`. Enters the OSMesa renderer one thread at a time.
 void WriteDeviationPicture(const std::string& path, const RelaxedFile& f,

@@ -60,6 +60,14 @@ ViewLayout PlanSideBySide(const Scene& first, const Scene& second, const RenderO
 
 /// Isometric + two orthographic views of `scene`, colour bar and annotations.
 Image RenderDeviationViews(const Scene& scene, const RenderOptions& options);
+/// Gets the renderer ready for pictures of `options`' size: opens OSMesa, makes the off-screen
+/// context and shaders and draws a small scene once, so that llvmpipe has compiled its shader
+/// variants (about 0.3 s on the first picture of a process otherwise). Any thread: the GL
+/// context is one per process, entered by one thread at a time. Throws like
+/// RenderDeviationViews; a caller warming up in the background may ignore that (the picture
+/// itself reports it).
+void WarmUpRenderer(const RenderOptions& options);
+
 /// The frames of an animation as RenderDeviationViews draws them, on one layout: the views are
 /// chosen and framed on every frame's points together, so the camera stands still from frame to
 /// frame, and the colour scale is the options', else the first frame's.
