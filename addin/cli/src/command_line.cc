@@ -5,11 +5,11 @@
 #include <exception>
 #include <string>
 
-#include "allocator_tuning.h"
 #include "cablefit/app/provenance.h"
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/allocator_tuning.h"
 #include "cablefit/core/base/solver_failure.h"
 #include "terminal_text.h"
 

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "cablefit/formats/allocator_tuning.h"
 #include "cad_read_in_process.h"
 #include "tube_in_child.h"
 
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
   // Killed with cablefit (kill -9 included) instead of reading on for minutes as an orphan.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (std::to_string(::getppid()) != argv[1]) return kUsage;  // the parent is already gone
+  cablefit::TuneAllocatorForSolves();
   const int code = Run(argc, argv);
   // No exit handlers: OCCT's per-process reader state is not torn down (and LeakSanitizer,
   // in sanitizer builds, does not report it), as in a process that is simply ended.
