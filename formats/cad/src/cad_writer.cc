@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/parallel_for.h"
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
 #include "occt_session.h"
@@ -103,15 +105,21 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
                       const std::vector<RelaxedCable>& cables, std::vector<std::string>* skipped) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
   int shapes = 0;
-  // The spines of every cable first, then all sweeps in one helper process, then the document
-  // in the order of `cables`.
+  // The spines of every cable first, then all sweeps in helper processes, then the document in
+  // the order of `cables`.
   struct Pending {
     const DrawnCable* drawn = nullptr;
     std::vector<std::size_t> spines;  // indices into `sweeps`; two for a closed loop
     std::string problem;              // why it cannot be written, when it cannot
   };
-  std::vector<Pending> pending;
-  std::vector<CableSweep> sweeps;  // [mm]
+  // The spines (a B-spline fit each, a few ms) on every core: OCCT's curve fitting keeps no
+  // shared state. Sweeps are what crash on bad geometry, and they run in helper processes.
+  const int n = static_cast<int>(cables.size());
+  std::vector<Pending> pending(static_cast<std::size_t>(n));
+  std::vector<std::vector<CableSweep>> spines(static_cast<std::size_t>(n));  // [mm]
+  const auto diameter_of = [&](const RelaxedCable& relaxed) {  // [m]
+    return relaxed.diameter > 0 ? relaxed.diameter : input.cables[relaxed.source_cable].diameter;
+  };
   for (const RelaxedCable& relaxed : cables) {
     if (relaxed.source_cable < 0 || relaxed.source_cable >= static_cast<int>(input.cables.size())) {
       throw InvalidInput("relaxed cable refers to input cable " +
@@ -119,11 +127,17 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
                          std::to_string(input.cables.size()));
     }
     const DrawnCable& drawn = input.cables[relaxed.source_cable];
-    const double diameter = relaxed.diameter > 0 ? relaxed.diameter : drawn.diameter;  // [m]
-    if (!(diameter > 0)) {
+    if (!(diameter_of(relaxed) > 0)) {
       throw InvalidInput("cable '" + drawn.name + "': no diameter (drawn as a curve; set one)");
     }
-    Pending p;
+  }
+  const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  ParallelFor(n, std::min(threads, n), [&](int c) {
+    const RelaxedCable& relaxed = cables[static_cast<std::size_t>(c)];
+    const DrawnCable& drawn = input.cables[relaxed.source_cable];
+    const double diameter = diameter_of(relaxed);  // [m]
+    Pending& p = pending[static_cast<std::size_t>(c)];
+    std::vector<CableSweep>& mine = spines[static_cast<std::size_t>(c)];
     p.drawn = &drawn;
     try {
       if (relaxed.centreline.size() < 2 || !relaxed.centreline.points.allFinite()) {
@@ -143,7 +157,6 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       // (of the thickness for a flat strip: its thinnest measure).
       const double size = relaxed.flat ? relaxed.flat->thickness : diameter;  // [m]
       const double tolerance = std::min(0.01, 1e-3 * size / kMetresPerOcctUnit);  // [mm]
-      std::vector<CableSweep> mine;
       const auto add = [&](const CentrelineRows& along) {
         CableSweep sweep;
         sweep.spine = BRepBuilderAPI_MakeWire(MakeSplineEdge(along.topRows<3>(), tolerance)).Wire();
@@ -165,16 +178,20 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       } else {
         add(rows);
       }
-      for (auto& sweep : mine) {
-        p.spines.push_back(sweeps.size());
-        sweeps.push_back(std::move(sweep));
-      }
     } catch (const InvalidInput& e) {
       p.problem = e.what();
+      mine.clear();
     } catch (const Standard_Failure& e) {
       p.problem = e.GetMessageString();
+      mine.clear();
     }
-    pending.push_back(std::move(p));
+  });
+  std::vector<CableSweep> sweeps;  // [mm], in the order of `cables`
+  for (int c = 0; c < n; ++c) {
+    for (CableSweep& sweep : spines[static_cast<std::size_t>(c)]) {
+      pending[static_cast<std::size_t>(c)].spines.push_back(sweeps.size());
+      sweeps.push_back(std::move(sweep));
+    }
   }
   const std::vector<TubeSweepResult> tubes = MakeTubeSolidsInChild(sweeps);
   for (const Pending& p : pending) {
