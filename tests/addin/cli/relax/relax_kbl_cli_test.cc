@@ -124,6 +124,30 @@ TEST(RelaxKblCli, A183SegmentHarnessRelaxesEverySegmentToItsVirtualLength) {
   EXPECT_EQ(j.at("networks").at(0).at("cables").size(), 183u);
 }
 
+// Every segment 3 % longer than drawn (tools/make_kbl_harness.py, 20 segments): each stretch
+// between its fixings must buckle out while gravity comes in, and the continuation meets folds
+// where a stretch snaps through. It used to stall there (19 of 20 segments failed).
+TEST(RelaxKblCli, AHarnessLongerThanDrawnSnapsThroughToEquilibrium) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_longer");
+  const fs::path config = out.parent_path() / "relax_kbl_longer.json";
+  std::ofstream(config) << R"({"default": {"length": "+3%"}})";
+  const auto run = RunCablefit("relax " + Q(Kbl("synthetic_harness_20.kbl")) + " --config " +
+                               Q(config) + " --out " + Q(out) + " --no-pictures --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const Json j = json::ReadJsonFile((out / "synthetic_harness_20.json").string());
+  ASSERT_EQ(j.at("cables").size(), 20u);
+  for (const Json& c : j.at("cables")) {
+    ASSERT_FALSE(c.contains("error")) << c.at("name") << ": " << c.value("error", "");
+    const double virtual_length = c.at("kbl").at("virtual_length").get<double>();
+    EXPECT_NEAR(c.at("kbl").at("relaxed_length").get<double>(), 1.03 * virtual_length,
+                1e-3 * virtual_length)
+        << c.at("name");
+    EXPECT_TRUE(c.at("solver").at("converged").get<bool>()) << c.at("name");
+    EXPECT_TRUE(c.at("solver").at("stable").get<bool>()) << c.at("name");
+    EXPECT_FALSE(c.at("taut").get<bool>()) << c.at("name");
+  }
+}
+
 TEST(RelaxKblCli, AnAccuracyGivenOnTheCommandLineHoldsForKblToo) {
   const fs::path out = testing::FreshTempDir("relax_kbl_accuracy");
   const auto run = RunCablefit("relax " + Q(Kbl(std::string(kGearbox) + ".kbl")) + " --out " +
