@@ -5,11 +5,38 @@
 
 namespace cablefit {
 
+namespace {
+
+// The cold solve from the drawing, on elements kCoarseFactor times as long, when the first
+// level has at least kCoarseFromElements: the first level then starts from its equilibrium
+// (a few Newton steps) instead of taking the whole way from the drawing on its finer mesh.
+// Measured: the synthetic 183-segment harness's first level took 134 iterations (1.1 s), movo's
+// 35 (0.17 s). Only without obstacles: a coarse mesh rests on other edges than a finer one.
+// Not converged: an empty solution, and the first level is solved cold as before.
+constexpr double kCoarseFactor = 4.0;
+constexpr double kCoarseFromElements = 1000.0;
+
+NetworkSolution CoarseStart(const NetworkSpec& spec, const NetworkOptions& options) {
+  if (!options.initial_routes.empty() || !spec.obstacles.empty()) return {};
+  double total = 0.0;
+  for (const BranchSpec& b : spec.branches) total += b.length;
+  if (total / options.element_length < kCoarseFromElements) return {};
+  NetworkOptions coarse = options;
+  coarse.refinement = 0;
+  coarse.element_length = kCoarseFactor * options.element_length;
+  NetworkSolution sol = SolveNetwork(spec, coarse);
+  if (!sol.converged()) return {};
+  return sol;
+}
+
+}  // namespace
+
 NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan& plan,
                                   const NetworkOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   NetworkSimulation out;
   NetworkSolution last_converged;
+  const NetworkSolution coarse = CoarseStart(spec, options);
   const RefinedSolution refined = SolveRefined(plan, [&](int level) {
     NetworkOptions at = options;
     at.refinement = level;
@@ -20,6 +47,9 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
     if (level > 0 && out.finest.converged()) {
       at.initial_routes = out.finest.branches;
       at.initial_normals = out.finest.element_normals;
+    } else if (level == 0 && coarse.converged()) {
+      at.initial_routes = coarse.branches;
+      at.initial_normals = coarse.element_normals;
     }
     out.finest = SolveNetwork(spec, at);
     if (!out.finest.converged() && !at.initial_routes.empty()) {
