@@ -12,6 +12,10 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
 
 #include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/deviation_views.h"
@@ -207,6 +211,8 @@ std::string Row(const std::string& file, const std::string& cable, const CableRe
 
 namespace {
 
+constexpr int kWarmUpNice = 10;
+
 RenderOptions PictureOptions() {
   RenderOptions options;
   options.width = 1400;
@@ -234,6 +240,11 @@ std::string FileSafe(const std::string& name) {
 }  // namespace
 
 void WarmUpDeviationPictures() noexcept {
+#if defined(__linux__)
+  // Behind the relax on a busy core: this thread and the rasteriser threads it starts (they
+  // inherit its nice value) take what the solver leaves.
+  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kWarmUpNice);
+#endif
   try {
     std::lock_guard lock(RenderMutex());
     WarmUpRenderer(PictureOptions());
