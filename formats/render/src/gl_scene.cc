@@ -147,10 +147,12 @@ SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides)
   const double size = box.isEmpty() ? 0.0 : box.diagonal().norm();  // [m]
   for (const SceneTube& tube : scene.tubes) {
     const Eigen::Index n = tube.centreline.points.cols();
-    const std::vector<Eigen::Index> kept =
-        size > 0 && tube.centreline.points.allFinite()
-            ? ThinnedIndices(tube.centreline.points, kThinTolerance * size, kThinMaxChord * size)
-            : std::vector<Eigen::Index>();
+    std::vector<Eigen::Index> kept;
+    if (size > 0 && tube.centreline.points.allFinite()) {
+      kept = ThinnedIndices(tube.centreline.points, kThinTolerance * size, kThinMaxChord * size);
+    } else {  // drawn as given (BuildTubeMesh skips what it cannot draw)
+      for (Eigen::Index i = 0; i < n; ++i) kept.push_back(i);
+    }
     Eigen::Matrix3Xd points(3, static_cast<Eigen::Index>(kept.size()));  // 3 x k [m]
     std::vector<Rgb> colours(kept.size(), tube.flat_colour);
     for (std::size_t k = 0; k < kept.size(); ++k) {
