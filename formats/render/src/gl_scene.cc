@@ -150,6 +150,13 @@ SceneMeshes BuildMeshes(const Scene& scene, const ColourScale& scale, int sides)
     std::vector<Eigen::Index> kept;
     if (size > 0 && tube.centreline.points.allFinite()) {
       kept = ThinnedIndices(tube.centreline.points, kThinTolerance * size, kThinMaxChord * size);
+      // The largest deviation keeps its vertex: the colour bar's top shows on the tube.
+      if (tube.deviation.size() == n && n > 0) {
+        Eigen::Index peak = 0;
+        tube.deviation.maxCoeff(&peak);
+        const auto at = std::lower_bound(kept.begin(), kept.end(), peak);
+        if (at == kept.end() || *at != peak) kept.insert(at, peak);
+      }
     } else {  // drawn as given (BuildTubeMesh skips what it cannot draw)
       for (Eigen::Index i = 0; i < n; ++i) kept.push_back(i);
     }
