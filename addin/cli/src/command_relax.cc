@@ -33,6 +33,7 @@
 #include "cablefit/app/relax_report.h"
 #include "cablefit/app/relax_summary.h"
 #include "run_summary.h"
+#include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/input_file.h"
 #include "terminal_text.h"
 
@@ -249,6 +250,13 @@ int RunRelax(const RelaxArgs& a) {
     }
   }
 
+  // The STEP writer's sweep helpers load OpenCASCADE while the cables relax (this thread lives
+  // until they are used or let go).
+  for (const RelaxedFile& f : files) {
+    if (!f.read_ok || f.drawing.cables.empty()) continue;
+    PrepareRelaxedStep(f.drawing.cables.size());
+    break;
+  }
   // The renderer's start-up (OSMesa, llvmpipe compiling its shaders) on a core of its own while
   // the cables relax; no OpenCASCADE work runs in this process until stage 3 (see cad_mutex).
   std::jthread warm_up;  // joined on every way out

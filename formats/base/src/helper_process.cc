@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -87,11 +88,11 @@ std::string HelperPath(const std::string& helper) {
 
 std::string OcctChildPath() { return HelperPath(kOcctHelper); }
 
-std::optional<ChildOutcome> RunChildProcess(const std::string& program,
-                                            const std::vector<std::string>& args,
-                                            double max_seconds,
-                                            const std::vector<std::pair<int, int>>& inherit_fds,
-                                            bool keep_stderr) {
+namespace {
+
+// Starts `program` as RunChildProcess describes; -1 when it cannot be started.
+pid_t SpawnChild(const std::string& program, const std::vector<std::string>& args,
+                 const std::vector<std::pair<int, int>>& inherit_fds, bool keep_stderr) {
   std::vector<std::string> argv_storage;
   argv_storage.reserve(args.size() + 1);
   argv_storage.push_back(program);
@@ -101,7 +102,7 @@ std::optional<ChildOutcome> RunChildProcess(const std::string& program,
   argv.push_back(nullptr);
 
   posix_spawn_file_actions_t actions;
-  if (::posix_spawn_file_actions_init(&actions) != 0) return std::nullopt;
+  if (::posix_spawn_file_actions_init(&actions) != 0) return -1;
   ::posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   ::posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   if (!keep_stderr) {
@@ -116,8 +117,11 @@ std::optional<ChildOutcome> RunChildProcess(const std::string& program,
   pid_t pid = -1;
   const int rc = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
   ::posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) return std::nullopt;
+  return rc == 0 ? pid : -1;
+}
 
+// Waits for the started child `pid` as RunChildProcess describes.
+std::optional<ChildOutcome> WaitForChild(pid_t pid, double max_seconds) {
   ChildGuard guard(pid);
   const auto start = std::chrono::steady_clock::now();
   int status = 0;
@@ -146,6 +150,80 @@ std::optional<ChildOutcome> RunChildProcess(const std::string& program,
   return outcome;
 }
 
+// A descriptor moved above the ones helpers receive (dup2 never maps one onto itself, which
+// would leave close-on-exec set), close-on-exec.
+int AboveHelperFds(int fd, int last) {
+  if (fd < 0 || fd > last) return fd;
+  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, last + 1);
+  ::close(fd);
+  return moved;
+}
+
+}  // namespace
+
+std::optional<ChildOutcome> RunChildProcess(const std::string& program,
+                                            const std::vector<std::string>& args,
+                                            double max_seconds,
+                                            const std::vector<std::pair<int, int>>& inherit_fds,
+                                            bool keep_stderr) {
+  const pid_t pid = SpawnChild(program, args, inherit_fds, keep_stderr);
+  if (pid < 0) return std::nullopt;
+  return WaitForChild(pid, max_seconds);
+}
+
+std::unique_ptr<WaitingHelper> WaitingHelper::Start(
+    const std::string& helper, const std::vector<std::string>& args,
+    const std::vector<std::pair<int, int>>& inherit_fds) {
+  const std::string program = HelperPath(helper);
+  if (program.empty()) return nullptr;
+  int ends[2];
+  if (::pipe2(ends, O_CLOEXEC) != 0) return nullptr;
+  const int read_end = AboveHelperFds(ends[0], kGoFd);
+  const int write_end = AboveHelperFds(ends[1], kGoFd);
+  if (read_end < 0 || write_end < 0) {
+    if (read_end >= 0) ::close(read_end);
+    if (write_end >= 0) ::close(write_end);
+    return nullptr;
+  }
+  std::vector<std::string> helper_args{std::to_string(::getpid())};
+  helper_args.insert(helper_args.end(), args.begin(), args.end());
+  std::vector<std::pair<int, int>> fds = inherit_fds;
+  fds.emplace_back(read_end, kGoFd);
+  const pid_t pid = SpawnChild(program, helper_args, fds, false);
+  ::close(read_end);
+  if (pid < 0) {
+    ::close(write_end);
+    return nullptr;
+  }
+  // It loads while this process works: behind that work on a busy core.
+  ::setpriority(PRIO_PROCESS, static_cast<id_t>(pid), kWaitingNice);
+  return std::unique_ptr<WaitingHelper>(new WaitingHelper(pid, write_end));
+}
+
+std::optional<ChildOutcome> WaitingHelper::Run(double max_seconds) {
+  CABLEFIT_REQUIRE(go_fd_ >= 0, "WaitingHelper::Run called twice");
+  const char go = 'g';
+  const bool sent = ::write(go_fd_, &go, 1) == 1;
+  ::close(go_fd_);
+  go_fd_ = -1;
+  const pid_t pid = pid_;
+  pid_ = -1;
+  if (!sent) {
+    ChildGuard reap(pid);  // it ends on the closed pipe, or is killed
+    return std::nullopt;
+  }
+  return WaitForChild(pid, max_seconds);
+}
+
+WaitingHelper::~WaitingHelper() {
+  if (go_fd_ >= 0) ::close(go_fd_);  // end of file: an unused helper exits
+  if (pid_ > 0) {
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+}
+
 std::optional<ChildOutcome> RunHelper(const std::string& helper,
                                       const std::vector<std::string>& args, double max_seconds,
                                       const std::vector<std::pair<int, int>>& inherit_fds) {
@@ -162,13 +240,8 @@ std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, d
   return RunHelper(kOcctHelper, args, max_seconds, inherit_fds);
 }
 
-MemoryFile::MemoryFile(const char* name) : fd_(::memfd_create(name, MFD_CLOEXEC)) {
-  if (fd_ >= 0 && fd_ <= kHelperFdLast) {
-    const int moved = ::fcntl(fd_, F_DUPFD_CLOEXEC, kHelperFdLast + 1);
-    ::close(fd_);
-    fd_ = moved;
-  }
-}
+MemoryFile::MemoryFile(const char* name)
+    : fd_(AboveHelperFds(::memfd_create(name, MFD_CLOEXEC), kHelperFdLast)) {}
 
 MemoryFile::~MemoryFile() {
   if (fd_ >= 0) ::close(fd_);

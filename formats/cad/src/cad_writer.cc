@@ -232,4 +232,6 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
   WriteStepAtomically(doc, path, "AP242DIS");
 }
 
+void PrepareRelaxedStep(std::size_t cables) { PrestartTubeSweepHelpers(cables); }
+
 }  // namespace cablefit

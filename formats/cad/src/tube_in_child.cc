@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -122,22 +124,64 @@ TubeSweepResult SweepHere(const CableSweep& sweep) {
   return r;
 }
 
+// A sweep helper started ahead (PrestartTubeSweepHelpers) with the files it will read and write.
+struct WaitingSweeper {
+  MemoryFile spines{"cablefit-spines"};
+  MemoryFile tubes{"cablefit-tubes"};
+  std::unique_ptr<WaitingHelper> helper;
+};
+
+std::mutex& PoolMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+std::vector<std::unique_ptr<WaitingSweeper>>& Pool() {
+  static std::vector<std::unique_ptr<WaitingSweeper>> pool;
+  return pool;
+}
+
+std::unique_ptr<WaitingSweeper> TakeWaitingSweeper() {
+  const std::lock_guard lock(PoolMutex());
+  if (Pool().empty()) return nullptr;
+  std::unique_ptr<WaitingSweeper> taken = std::move(Pool().back());
+  Pool().pop_back();
+  return taken;
+}
+
+// How many helpers MakeTubeSolidsInChild uses for `sweeps` sweeps (0: in this process or one
+// per sweep after a failure).
+int HelpersFor(std::size_t sweeps) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int many = std::min(cores, static_cast<int>(sweeps / kSweepsPerHelper));
+  return many > 1 ? many : sweeps > 1 ? 1 : 0;
+}
+
 // The sweeps in one helper: the results, or (when it died, hung or wrote nonsense) nullopt with
-// `why` said. `started` is false when no helper could be started at all.
+// `why` said. `started` is false when no helper could be started at all. A waiting helper of
+// the pool is used when there is one: it has loaded already.
 std::optional<std::vector<TubeSweepResult>> SweepBatch(const std::vector<CableSweep>& sweeps,
                                                        double max_seconds, std::string* why,
                                                        bool* started) {
   *started = false;
-  const MemoryFile spines_file("cablefit-spines");
-  const MemoryFile tubes_file("cablefit-tubes");
+  std::unique_ptr<WaitingSweeper> waiting = TakeWaitingSweeper();
+  std::optional<MemoryFile> own_spines, own_tubes;
+  if (!waiting) {
+    own_spines.emplace("cablefit-spines");
+    own_tubes.emplace("cablefit-tubes");
+  }
+  const MemoryFile& spines_file = waiting ? waiting->spines : *own_spines;
+  const MemoryFile& tubes_file = waiting ? waiting->tubes : *own_tubes;
   if (!spines_file.ok() || !tubes_file.ok()) return std::nullopt;
   {
     std::ofstream out(spines_file.path(), std::ios::binary | std::ios::trunc);
     for (const CableSweep& sweep : sweeps) WriteSweep(sweep, out);
     if (!out.flush()) return std::nullopt;
   }
-  const auto outcome = RunOcctChild({"sweeps", "3", "4"}, max_seconds,
-                                    {{spines_file.fd(), 3}, {tubes_file.fd(), 4}});
+  const auto outcome =
+      waiting ? waiting->helper->Run(max_seconds)
+              : RunOcctChild({"sweeps", "3", "4"}, max_seconds,
+                             {{spines_file.fd(), 3}, {tubes_file.fd(), 4}});
   if (!outcome) return std::nullopt;
   *started = true;
   if (outcome->timed_out) {
@@ -176,8 +220,7 @@ std::vector<TubeSweepResult> MakeTubeSolidsInChild(const std::vector<CableSweep>
   bool started = false;
   // Many sweeps: one helper per core, each taking every n-th sweep (long and short cables
   // mixed alike); a sweep's tube does not depend on its helper, so neither does the result.
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int helpers = std::min(cores, static_cast<int>(sweeps.size() / kSweepsPerHelper));
+  const int helpers = HelpersFor(sweeps.size());
   if (helpers > 1) {
     std::vector<std::optional<std::vector<TubeSweepResult>>> parts(static_cast<size_t>(helpers));
     ParallelFor(helpers, helpers, [&](int h) {
@@ -212,6 +255,18 @@ std::vector<TubeSweepResult> MakeTubeSolidsInChild(const std::vector<CableSweep>
     }
   }
   return results;
+}
+
+void PrestartTubeSweepHelpers(std::size_t sweeps) {
+  const std::lock_guard lock(PoolMutex());
+  for (int k = static_cast<int>(Pool().size()); k < HelpersFor(sweeps); ++k) {
+    auto sweeper = std::make_unique<WaitingSweeper>();
+    if (!sweeper->spines.ok() || !sweeper->tubes.ok()) return;
+    sweeper->helper = WaitingHelper::Start(kOcctHelper, {"sweeps-when-told", "3", "4"},
+                                           {{sweeper->spines.fd(), 3}, {sweeper->tubes.fd(), 4}});
+    if (!sweeper->helper) return;
+    Pool().push_back(std::move(sweeper));
+  }
 }
 
 int SweepTubesInHelper(int spines_fd, int tubes_fd) {

@@ -41,6 +41,11 @@ struct TubeSweepResult {
 std::vector<TubeSweepResult> MakeTubeSolidsInChild(const std::vector<CableSweep>& sweeps,
                                                    double max_seconds = 600.0);
 
+/// Starts the helpers MakeTubeSolidsInChild will use for `sweeps` sweeps now, waiting
+/// (WaitingHelper): they load while the caller does other work, and the next calls take them
+/// (each its own sweeps, results the same). Call it from a thread that outlives their use.
+void PrestartTubeSweepHelpers(std::size_t sweeps);
+
 /// The helper's side of MakeTubeSolidsInChild: reads the sweeps from descriptor `spines_fd` and
 /// writes the results to `tubes_fd`. Returns the exit status: 0, or 4 when a file cannot be read
 /// or written.

@@ -5,14 +5,19 @@
 //       read in cablefit reports the problem), non-zero or a signal only when OCCT crashed
 //   cablefit-occt-child PARENT_PID sweeps SPINES_FD TUBES_FD
 //       sweeps every tube and flat strip of a batch (SweepTubesInHelper)
+//   cablefit-occt-child PARENT_PID sweeps-when-told SPINES_FD TUBES_FD
+//       the same once a byte arrives on descriptor 5 (a WaitingHelper, started before the
+//       batch was written); end of file there instead: exit 0, unused
 #include <sys/prctl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <string>
 
 #include "cablefit/formats/allocator_tuning.h"
+#include "cablefit/formats/helper_process.h"
 #include "cad_read_in_process.h"
 #include "tube_in_child.h"
 
@@ -40,6 +45,14 @@ int Run(int argc, char** argv) {
     return 0;
   }
   if (mode == "sweeps" && argc == 5) {
+    return cablefit::SweepTubesInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
+  }
+  if (mode == "sweeps-when-told" && argc == 5) {
+    char go = 0;
+    ssize_t got = 0;
+    while ((got = ::read(cablefit::kGoFd, &go, 1)) < 0 && errno == EINTR) {
+    }
+    if (got != 1) return 0;
     return cablefit::SweepTubesInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
   }
   return kUsage;

@@ -6,7 +6,13 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <sys/stat.h>
+#include <sys/wait.h>
+
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "cablefit/core/base/cancellation.h"
 
@@ -66,6 +72,66 @@ TEST(HelperProcess, DescriptorsAreHandedOverOnlyWhenAsked) {
   EXPECT_EQ(outcome->exit_code, 1);  // the test failed, so `&&` gave the shell's status 1
   ::close(pipe_fds[0]);
   ::close(pipe_fds[1]);
+}
+
+// A stand-in helper: reports on descriptor 3 whether it was told to work (a byte on kGoFd) or
+// let go (end of file there), and with which arguments.
+struct WaitingScriptFile {
+  std::string path = "/tmp/cablefit-test-waiting-child-" + std::to_string(::getpid()) + ".sh";
+  WaitingScriptFile() {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs("#!/bin/sh\nif [ \"$(head -c 1 <&5)\" = g ]; then echo \"told $*\" >&3; "
+               "else echo unused >&3; fi\n",
+               f);
+    std::fclose(f);
+    ::chmod(path.c_str(), 0755);
+    ::setenv("CABLEFIT_TEST_WAITING_CHILD", path.c_str(), 1);
+  }
+  ~WaitingScriptFile() { std::remove(path.c_str()); }
+};
+
+void WaitingScript() { static const WaitingScriptFile file; }
+
+std::string ReadAll(int fd) {
+  std::string text;
+  char buffer[256];
+  ssize_t got = 0;
+  while ((got = ::read(fd, buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<size_t>(got));
+  return text;
+}
+
+TEST(WaitingHelper, RunsItsWorkWhenToldAndReportsLikeAChild) {
+  WaitingScript();
+  int out[2];
+  ASSERT_EQ(::pipe2(out, O_CLOEXEC), 0);
+  auto helper = WaitingHelper::Start("cablefit-test-waiting-child", {"sweeps-when-told", "3"},
+                                     {{out[1], 3}});
+  ASSERT_NE(helper, nullptr);
+  ::close(out[1]);
+  const auto outcome = helper->Run(60.0);
+  ASSERT_TRUE(outcome.has_value());
+  EXPECT_EQ(outcome->exit_code, 0);
+  EXPECT_EQ(ReadAll(out[0]), "told " + std::to_string(::getpid()) + " sweeps-when-told 3\n");
+  ::close(out[0]);
+}
+
+TEST(WaitingHelper, AnUnusedOneIsLetGoAndReaped) {
+  WaitingScript();
+  int out[2];
+  ASSERT_EQ(::pipe2(out, O_CLOEXEC), 0);
+  auto helper = WaitingHelper::Start("cablefit-test-waiting-child", {}, {{out[1], 3}});
+  ASSERT_NE(helper, nullptr);
+  ::close(out[1]);
+  helper.reset();  // closes the go pipe and waits for the helper
+  EXPECT_EQ(ReadAll(out[0]), "unused\n");
+  ::close(out[0]);
+  // Reaped: no child of ours is left, not even a zombie.
+  EXPECT_EQ(::waitpid(-1, nullptr, WNOHANG), -1);
+}
+
+TEST(WaitingHelper, AHelperThatDoesNotExistIsNoHelper) {
+  ::setenv("CABLEFIT_TEST_ABSENT_CHILD", "/nonexistent/cablefit-no-such-helper", 1);
+  EXPECT_EQ(WaitingHelper::Start("cablefit-test-absent-child", {}, {}), nullptr);
 }
 
 }  // namespace

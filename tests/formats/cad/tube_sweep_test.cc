@@ -120,6 +120,34 @@ DrawnCable WriteAndReadBack(const Polyline& centreline, double diameter, const s
   return back.cables[0];
 }
 
+// Helpers started before the sweeps are known (PrepareRelaxedStep) give the file the same tubes
+// as helpers started for them.
+TEST(TubeSweep, HelpersStartedAheadSweepTheSameTubes) {
+  HarnessDrawing drawing;
+  std::vector<RelaxedCable> cables;
+  for (int k = 0; k < 16; ++k) {  // enough for two helpers
+    Polyline c = FromRows(kBentSkeleton, 69);
+    c.points.row(2).array() += 0.03 * k;
+    drawing.cables.push_back(OneCable(c, kBentDiameter).cables[0]);
+    drawing.cables.back().name = "tube" + std::to_string(k);
+    cables.push_back(RelaxedCable{k, c, kBentDiameter});
+  }
+  const auto dir = testing::FreshTempDir("tube_sweep_ahead");
+  WriteRelaxedStep((dir / "fresh.step").string(), drawing, cables);
+  PrepareRelaxedStep(cables.size());
+  WriteRelaxedStep((dir / "ahead.step").string(), drawing, cables);
+  const HarnessDrawing fresh = ReadCadFile((dir / "fresh.step").string());
+  const HarnessDrawing ahead = ReadCadFile((dir / "ahead.step").string());
+  ASSERT_EQ(fresh.cables.size(), 16u);
+  ASSERT_EQ(ahead.cables.size(), 16u);
+  for (size_t k = 0; k < 16; ++k) {
+    EXPECT_EQ(ahead.cables[k].name, fresh.cables[k].name);
+    EXPECT_NEAR(ahead.cables[k].diameter, fresh.cables[k].diameter, 1e-9);
+    EXPECT_LT(MaxDistanceToPolyline(ahead.cables[k].centreline, fresh.cables[k].centreline), 1e-9)
+        << k;
+  }
+}
+
 TEST(TubeSweep, NoisyMeshSkeletonThatCrashedThePipeSweepGivesTheTube) {
   const int n = static_cast<int>(std::size(kBentSkeleton));
   const Polyline route = FromRows(kBentSkeleton, n);

@@ -14,6 +14,7 @@
 // that lock forever.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -59,10 +60,41 @@ std::optional<ChildOutcome> RunHelper(const std::string& helper,
 std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
                                          const std::vector<std::pair<int, int>>& inherit_fds = {});
 
+/// The descriptor on which a WaitingHelper reads the byte that lets it start its work.
+inline constexpr int kGoFd = 5;
+
+/// A helper started before its work is ready: the executable loads (~0.1 s for OCCT's 70
+/// libraries) while this process does other things, at nice 10, then blocks reading one byte
+/// from descriptor kGoFd. Its arguments and descriptors are fixed at Start, so the work goes
+/// through files it was handed (MemoryFile). Run() sends the byte and waits as RunChildProcess
+/// does; an unused helper reads end-of-file when this object goes and exits (it is reaped).
+/// The parent-death signal of the helpers follows the thread that starts them: start them on
+/// a thread that outlives their use (the main thread).
+class WaitingHelper {
+ public:
+  /// nullptr when the helper does not exist or cannot be started (do the work another way).
+  static std::unique_ptr<WaitingHelper> Start(const std::string& helper,
+                                              const std::vector<std::string>& args,
+                                              const std::vector<std::pair<int, int>>& inherit_fds);
+  /// Once: lets it work and waits at most `max_seconds` (and the calling thread's deadline).
+  /// std::nullopt when it was lost before it could be told.
+  std::optional<ChildOutcome> Run(double max_seconds);
+  ~WaitingHelper();
+  WaitingHelper(const WaitingHelper&) = delete;
+  WaitingHelper& operator=(const WaitingHelper&) = delete;
+
+ private:
+  static constexpr int kWaitingNice = 10;
+  WaitingHelper(int pid, int go_fd) : pid_(pid), go_fd_(go_fd) {}
+  int pid_;
+  int go_fd_;
+};
+
 /// An anonymous in-memory file (memfd) to hand data to and from the helper: nothing is left in
 /// a temporary folder when this process or the helper is killed. Close-on-exec, so children
 /// that other threads start at the same time do not inherit it; RunChildProcess hands it to the
-/// helper explicitly (as descriptor 3 or 4: ours is kept above those, so that dup2 never maps a
+/// helper explicitly (as descriptor 3 or 4, 5 being a WaitingHelper's go pipe: ours is kept above
+/// those, so that dup2 never maps a
 /// descriptor onto itself, which would leave close-on-exec set).
 class MemoryFile {
  public:
@@ -76,7 +108,7 @@ class MemoryFile {
   std::string path() const { return "/proc/self/fd/" + std::to_string(fd_); }
 
  private:
-  static constexpr int kHelperFdLast = 4;
+  static constexpr int kHelperFdLast = kGoFd;
   int fd_;
 };
 

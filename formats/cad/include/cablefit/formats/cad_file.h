@@ -57,4 +57,9 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
                       const std::vector<RelaxedCable>& cables,
                       std::vector<std::string>* skipped = nullptr);
 
+/// Starts, ahead of time, the sweep helpers the next WriteRelaxedStep of `cables` cables will
+/// use: each loads OpenCASCADE (~0.1 s) while the caller relaxes. Unused ones exit when the
+/// process ends. Call it from a thread that lives until then (the main thread).
+void PrepareRelaxedStep(std::size_t cables);
+
 }  // namespace cablefit
