@@ -1,6 +1,7 @@
 #include "cablefit/formats/helper_process.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/mman.h>
@@ -202,8 +203,24 @@ std::unique_ptr<WaitingHelper> WaitingHelper::Start(
 
 std::optional<ChildOutcome> WaitingHelper::Run(double max_seconds) {
   CABLEFIT_REQUIRE(go_fd_ >= 0, "WaitingHelper::Run called twice");
+  // A helper that died meanwhile (it could not load, or was killed) has closed the pipe: the
+  // write then fails with EPIPE, and the SIGPIPE it raises must not end this process. Blocked
+  // for this thread and taken back if it came.
+  sigset_t pipe_signal, previous;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &previous);
   const char go = 'g';
-  const bool sent = ::write(go_fd_, &go, 1) == 1;
+  ssize_t written = 0;
+  while ((written = ::write(go_fd_, &go, 1)) < 0 && errno == EINTR) {
+  }
+  const bool sent = written == 1;
+  if (!sent && errno == EPIPE) {
+    const timespec no_wait{0, 0};
+    while (::sigtimedwait(&pipe_signal, nullptr, &no_wait) < 0 && errno == EINTR) {
+    }
+  }
+  ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
   ::close(go_fd_);
   go_fd_ = -1;
   const pid_t pid = pid_;

@@ -10,6 +10,8 @@
 #include <sys/wait.h>
 
 #include <csignal>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -80,7 +82,8 @@ struct WaitingScriptFile {
   std::string path = "/tmp/cablefit-test-waiting-child-" + std::to_string(::getpid()) + ".sh";
   WaitingScriptFile() {
     std::FILE* f = std::fopen(path.c_str(), "w");
-    std::fputs("#!/bin/sh\nif [ \"$(head -c 1 <&5)\" = g ]; then echo \"told $*\" >&3; "
+    std::fputs("#!/bin/sh\n[ \"$2\" = die ] && exit 3\n"
+               "if [ \"$(head -c 1 <&5)\" = g ]; then echo \"told $*\" >&3; "
                "else echo unused >&3; fi\n",
                f);
     std::fclose(f);
@@ -127,6 +130,26 @@ TEST(WaitingHelper, AnUnusedOneIsLetGoAndReaped) {
   ::close(out[0]);
   // Reaped: no child of ours is left, not even a zombie.
   EXPECT_EQ(::waitpid(-1, nullptr, WNOHANG), -1);
+}
+
+// A helper that ended before it was told (it could not load, or was killed): telling it must not
+// end this process with SIGPIPE.
+TEST(WaitingHelper, OneThatDiedBeforeItWasToldIsNoOutcomeNotADeadParent) {
+  WaitingScript();
+  auto helper = WaitingHelper::Start("cablefit-test-waiting-child", {"die"}, {});
+  ASSERT_NE(helper, nullptr);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // it exits at once
+  const auto outcome = helper->Run(60.0);
+  if (outcome) {
+    EXPECT_EQ(outcome->exit_code, 3);  // told in the instant before it ended
+  }
+  // Still here, and SIGPIPE is not left pending or blocked for this thread.
+  sigset_t pending;
+  sigpending(&pending);
+  EXPECT_EQ(sigismember(&pending, SIGPIPE), 0);
+  sigset_t mask;
+  pthread_sigmask(SIG_BLOCK, nullptr, &mask);
+  EXPECT_EQ(sigismember(&mask, SIGPIPE), 0);
 }
 
 TEST(WaitingHelper, AHelperThatDoesNotExistIsNoHelper) {
