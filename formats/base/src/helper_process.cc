@@ -151,6 +151,14 @@ std::optional<ChildOutcome> WaitForChild(pid_t pid, double max_seconds) {
   return outcome;
 }
 
+// A helper's arguments: this process's id first, so that it can end itself when its parent is
+// gone, then `args`.
+std::vector<std::string> HelperArguments(const std::vector<std::string>& args) {
+  std::vector<std::string> out{std::to_string(::getpid())};
+  out.insert(out.end(), args.begin(), args.end());
+  return out;
+}
+
 // A descriptor moved above the ones helpers receive (dup2 never maps one onto itself, which
 // would leave close-on-exec set), close-on-exec.
 int AboveHelperFds(int fd, int last) {
@@ -186,11 +194,9 @@ std::unique_ptr<WaitingHelper> WaitingHelper::Start(
     if (write_end >= 0) ::close(write_end);
     return nullptr;
   }
-  std::vector<std::string> helper_args{std::to_string(::getpid())};
-  helper_args.insert(helper_args.end(), args.begin(), args.end());
   std::vector<std::pair<int, int>> fds = inherit_fds;
   fds.emplace_back(read_end, kGoFd);
-  const pid_t pid = SpawnChild(program, helper_args, fds, false);
+  const pid_t pid = SpawnChild(program, HelperArguments(args), fds, false);
   ::close(read_end);
   if (pid < 0) {
     ::close(write_end);
@@ -246,10 +252,7 @@ std::optional<ChildOutcome> RunHelper(const std::string& helper,
                                       const std::vector<std::pair<int, int>>& inherit_fds) {
   const std::string program = HelperPath(helper);
   if (program.empty()) return std::nullopt;
-  // The helper's first argument is this process's id: it ends itself when its parent is gone.
-  std::vector<std::string> helper_args{std::to_string(::getpid())};
-  helper_args.insert(helper_args.end(), args.begin(), args.end());
-  return RunChildProcess(program, helper_args, max_seconds, inherit_fds);
+  return RunChildProcess(program, HelperArguments(args), max_seconds, inherit_fds);
 }
 
 std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, double max_seconds,
