@@ -1,17 +1,12 @@
-// cablefit-occt-child: the helper process of cablefit/formats/helper_process.h. It runs one piece
-// of OCCT work that can crash on real data, so that a segfault ends this process and not cablefit.
+// cablefit-occt-child: the helper process of cablefit/formats/helper_process.h that reads CAD.
+// OCCT's readers can crash on real data; a segfault then ends this process and not cablefit.
+// (The sweeps, which need none of the data exchange libraries, run in cablefit-sweep-child.)
 //   cablefit-occt-child PARENT_PID read PATH SPACING DEFLECTION AREA_FRACTION ASPECT JUNCTION_TOL
 //       reads the STEP/IGES file as ReadCadFile does; exit 0 whether or not it is valid (the
 //       read in cablefit reports the problem), non-zero or a signal only when OCCT crashed
-//   cablefit-occt-child PARENT_PID sweeps SPINES_FD TUBES_FD
-//       sweeps every tube and flat strip of a batch (SweepTubesInHelper)
-//   cablefit-occt-child PARENT_PID sweeps-when-told SPINES_FD TUBES_FD
-//       the same once a byte arrives on descriptor 5 (a WaitingHelper, started before the
-//       batch was written); end of file there instead: exit 0, unused
 #include <sys/prctl.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <string>
@@ -19,7 +14,6 @@
 #include "cablefit/formats/allocator_tuning.h"
 #include "cablefit/formats/helper_process.h"
 #include "cad_read_in_process.h"
-#include "tube_in_child.h"
 
 namespace {
 
@@ -43,17 +37,6 @@ int Run(int argc, char** argv) {
       // An exception is a clean failure that cablefit's own read will report with its message.
     }
     return 0;
-  }
-  if (mode == "sweeps" && argc == 5) {
-    return cablefit::SweepTubesInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
-  }
-  if (mode == "sweeps-when-told" && argc == 5) {
-    char go = 0;
-    ssize_t got = 0;
-    while ((got = ::read(cablefit::kGoFd, &go, 1)) < 0 && errno == EINTR) {
-    }
-    if (got != 1) return 0;
-    return cablefit::SweepTubesInHelper(std::atoi(argv[3]), std::atoi(argv[4]));
   }
   return kUsage;
 }

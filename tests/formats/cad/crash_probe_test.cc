@@ -1,4 +1,4 @@
-// The helper executable the CAD reader's probe and the tube sweep run in.
+// The helper executables the CAD reader's probe and the tube sweeps run in.
 #include "crash_probe.h"
 
 #include <gtest/gtest.h>
@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
@@ -25,6 +26,23 @@ TEST(CrashProbe, TheHelperIsFoundInTheBuildTree) {
   outcome = RunChildProcess(helper, {"1", "sweep", "3", "0.01", "4"}, 60.0);
   ASSERT_TRUE(outcome.has_value());
   EXPECT_EQ(outcome->exit_code, 64);
+  // The sweeps moved to cablefit-sweep-child: this helper no longer knows them.
+  outcome = RunOcctChild({"sweeps", "3", "4"}, 60.0);
+  ASSERT_TRUE(outcome.has_value());
+  EXPECT_EQ(outcome->exit_code, 64);
+}
+
+TEST(CrashProbe, TheSweepHelperIsFoundInTheBuildTreeAndKnowsOnlySweeps) {
+  const std::string helper = HelperPath(kSweepHelper);
+  ASSERT_FALSE(helper.empty());
+  EXPECT_EQ(std::filesystem::path(helper).filename(), "cablefit-sweep-child");
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"read", "x.step", "0.01", "0.01", "0.5", "5", "0.001"},
+        std::vector<std::string>{"sweeps", "3"}}) {
+    const auto outcome = RunHelper(kSweepHelper, args, 60.0);
+    ASSERT_TRUE(outcome.has_value());
+    EXPECT_EQ(outcome->exit_code, 64) << args.front();
+  }
 }
 
 // A fuzzed IGES on which OpenCASCADE's shape healing runs for over ten minutes (see

@@ -1,6 +1,7 @@
 // Work that can crash or that must not depend on this process's history runs in a separate
-// helper process, the executables cablefit-occt-child (OCCT work) and cablefit-mesh-child (mesh
-// skeletons; a small program, quick to start):
+// helper process, the executables cablefit-occt-child (CAD reads), cablefit-sweep-child (tube
+// and flat-strip sweeps; OCCT's modelling libraries only, so it starts in a third of the time)
+// and cablefit-mesh-child (mesh skeletons; a small program, quick to start):
 // - OCCT 7.6 dereferences null handles on some corrupt STEP files (SIGSEGV in StepToGeom) and
 //   its sweeps have read null faces, which no exception handler can catch: a crash or hang in
 //   the helper becomes one failed input instead of the end of a whole batch;
@@ -30,6 +31,7 @@ struct ChildOutcome {
 };
 
 inline constexpr const char* kOcctHelper = "cablefit-occt-child";
+inline constexpr const char* kSweepHelper = "cablefit-sweep-child";
 inline constexpr const char* kMeshHelper = "cablefit-mesh-child";
 
 /// The helper executable named `helper`: $CABLEFIT_OCCT_CHILD / $CABLEFIT_MESH_CHILD (the name in
@@ -63,8 +65,8 @@ std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, d
 /// The descriptor on which a WaitingHelper reads the byte that lets it start its work.
 inline constexpr int kGoFd = 5;
 
-/// A helper started before its work is ready: the executable loads (~0.1 s for OCCT's 70
-/// libraries) while this process does other things, at nice 10, then blocks reading one byte
+/// A helper started before its work is ready: the executable loads (~0.03 s for OCCT's modelling
+/// libraries, ~0.1 s for all 70 of its data exchange) while this process does other things, at nice 10, then blocks reading one byte
 /// from descriptor kGoFd. Its arguments and descriptors are fixed at Start, so the work goes
 /// through files it was handed (MemoryFile). Run() sends the byte and waits as RunChildProcess
 /// does; an unused helper reads end-of-file when this object goes and exits (it is reaped).
