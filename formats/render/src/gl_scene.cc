@@ -344,7 +344,7 @@ Image RenderPanels3d(int width, int height, int supersample, Rgb background,
       Gl().Color3ub(70, 70, 70);
       DrawPoints(scene.scan_points, GL_POINTS);
     }
-    picture.Paste(Downsample(context.ReadPixels(job.camera.width * s, job.camera.height * s), s),
+    picture.Paste(context.ReadPixels(job.camera.width * s, job.camera.height * s, s),
                   job.camera.x, job.camera.y);
   }
   return picture;

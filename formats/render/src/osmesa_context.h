@@ -3,7 +3,7 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
+#include <memory>
 
 #include "cablefit/formats/image.h"
 
@@ -29,14 +29,16 @@ class OffscreenContext {
   int height() const { return height_; }
   /// Finishes rendering and returns the buffer as an image with row 0 at the top.
   Image ReadPixels() const { return ReadPixels(width_, height_); }
-  /// The same for the top-left `width` x `height` pixels of the buffer.
-  Image ReadPixels(int width, int height) const;
+  /// The same for the top-left `width` x `height` pixels of the buffer, each `factor` x
+  /// `factor` block averaged into one pixel (Downsample(ReadPixels(width, height), factor),
+  /// without the full-size image in between: a supersampled panel is ~10 MB).
+  Image ReadPixels(int width, int height, int factor = 1) const;
 
  private:
   int width_;
   int height_;
   void* context_ = nullptr;  // OSMesaContext
-  std::vector<std::uint8_t> buffer_;  // RGBA, bottom row first (GL convention)
+  std::unique_ptr<std::uint8_t[]> buffer_;  // RGBA, bottom row first (GL convention)
 };
 
 }  // namespace cablefit::render
