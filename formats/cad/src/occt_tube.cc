@@ -9,16 +9,12 @@
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
 
-#include <optional>
 #include <string>
 
-#include "cablefit/core/base/cubic_spline_fit.h"
 #include "cablefit/core/base/errors.h"
 
 namespace cablefit {
@@ -42,34 +38,11 @@ TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
   const int n = static_cast<int>(points.cols());
   if (n < 2) throw InvalidInput("a centreline needs at least 2 points");
   if (!points.allFinite()) throw InvalidInput("a centreline has non-finite points");
-  // Cubic, C2: smooth enough for a sweep; higher degrees with many knots make the pipe
-  // surface approximation fail. Our own fit (cubic_spline_fit.h) first: OCCT's took ~5 ms a
-  // cable. OCCT's for fewer than 4 points (a straight pair gives a line) and should ours fail.
-  if (const std::optional<CubicSpline> fit = FitCubicSpline(points, tolerance, n)) {
-    const int m = static_cast<int>(fit->poles.cols());
-    TColgp_Array1OfPnt poles(1, m);
-    for (int i = 0; i < m; ++i)
-      poles.SetValue(i + 1, gp_Pnt(fit->poles(0, i), fit->poles(1, i), fit->poles(2, i)));
-    const int distinct = static_cast<int>(fit->interior_knots.size()) + 2;
-    TColStd_Array1OfReal knots(1, distinct);
-    TColStd_Array1OfInteger multiplicities(1, distinct);
-    knots.SetValue(1, 0.0);
-    multiplicities.SetValue(1, 4);
-    for (int k = 0; k < distinct - 2; ++k) {
-      knots.SetValue(k + 2, fit->interior_knots[static_cast<size_t>(k)]);
-      multiplicities.SetValue(k + 2, 1);
-    }
-    knots.SetValue(distinct, 1.0);
-    multiplicities.SetValue(distinct, 4);
-    try {
-      return BRepBuilderAPI_MakeEdge(new Geom_BSplineCurve(poles, knots, multiplicities, 3)).Edge();
-    } catch (const Standard_Failure&) {
-      // OCCT's fit below.
-    }
-  }
   TColgp_Array1OfPnt pts(1, n);
   for (int i = 0; i < n; ++i) pts.SetValue(i + 1, gp_Pnt(points(0, i), points(1, i), points(2, i)));
   try {
+    // Cubic, C2: smooth enough for a sweep; higher degrees with many knots make the pipe
+    // surface approximation fail. A straight pair of points gives a line.
     GeomAPI_PointsToBSpline fit(pts, n == 2 ? 1 : 3, n == 2 ? 1 : 3,
                                 n == 2 ? GeomAbs_C0 : GeomAbs_C2, tolerance);
     if (!fit.IsDone()) throw InvalidInput("could not fit a B-spline through the centreline");
