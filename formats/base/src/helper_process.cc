@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -16,11 +17,13 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <string>
 #include <mutex>
 #include <thread>
 
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/allocator_tuning.h"
 
 extern char** environ;
 
@@ -265,6 +268,22 @@ MemoryFile::MemoryFile(const char* name)
 
 MemoryFile::~MemoryFile() {
   if (fd_ >= 0) ::close(fd_);
+}
+
+void RunAsHelper(int argc, char** argv, int (*work)(int argc, char** argv), bool tune_allocator) {
+  if (argc < 3) std::_Exit(kHelperUsage);
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (std::to_string(::getppid()) != argv[1]) std::_Exit(kHelperUsage);
+  if (tune_allocator) TuneAllocatorForSolves();
+  std::_Exit(work(argc, argv));
+}
+
+bool WaitUntilTold() {
+  char go = 0;
+  ssize_t got = 0;
+  while ((got = ::read(kGoFd, &go, 1)) < 0 && errno == EINTR) {
+  }
+  return got == 1;
 }
 
 }  // namespace cablefit

@@ -65,6 +65,22 @@ std::optional<ChildOutcome> RunOcctChild(const std::vector<std::string>& args, d
 /// The descriptor on which a WaitingHelper reads the byte that lets it start its work.
 inline constexpr int kGoFd = 5;
 
+/// A helper's exit status for a call it does not know (or a parent already gone).
+inline constexpr int kHelperUsage = 64;
+
+/// The main function of every helper executable, around its own `work(argc, argv)`: it dies
+/// with its parent (kill -9 included) instead of working on as an orphan, returns kHelperUsage
+/// at once when its parent (argv[1], as RunHelper passes it) is already gone, optionally tunes
+/// the allocator as cablefit does (TuneAllocatorForSolves), and ends without exit handlers, as
+/// a process that is simply ended (OCCT's per-process state is not torn down, and
+/// LeakSanitizer in sanitizer builds does not report it).
+[[noreturn]] void RunAsHelper(int argc, char** argv, int (*work)(int argc, char** argv),
+                              bool tune_allocator);
+
+/// The helper's side of a WaitingHelper: blocks until Run() lets it work (true) or the
+/// WaitingHelper went unused (false: end of file on kGoFd).
+bool WaitUntilTold();
+
 /// A helper started before its work is ready: the executable loads (~0.03 s for OCCT's modelling
 /// libraries, ~0.1 s for all 70 of its data exchange) while this process does other things, at nice 10, then blocks reading one byte
 /// from descriptor kGoFd. Its arguments and descriptors are fixed at Start, so the work goes
