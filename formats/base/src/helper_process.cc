@@ -17,8 +17,8 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
-#include <string>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "cablefit/core/base/cancellation.h"

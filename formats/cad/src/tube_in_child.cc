@@ -79,14 +79,14 @@ void WriteSweep(const CableSweep& sweep, std::ostream& out) {
     builder.MakeCompound(both);
     builder.Add(both, sweep.spine);
     builder.Add(both, sweep.guide);
-    const std::string text = ShapeBytes(both);
+    const std::string bytes = ShapeBytes(both);
     std::snprintf(header, sizeof header, "STRIP %.17g %.17g %d %zu\n", sweep.flat->width,
-                  sweep.flat->thickness, sweep.flat->rounded_edges ? 1 : 0, text.size());
-    out << header << text;
+                  sweep.flat->thickness, sweep.flat->rounded_edges ? 1 : 0, bytes.size());
+    out << header << bytes;
   } else {
-    const std::string text = ShapeBytes(sweep.spine);
-    std::snprintf(header, sizeof header, "SPINE %.17g %zu\n", sweep.diameter, text.size());
-    out << header << text;
+    const std::string bytes = ShapeBytes(sweep.spine);
+    std::snprintf(header, sizeof header, "SPINE %.17g %zu\n", sweep.diameter, bytes.size());
+    out << header << bytes;
   }
 }
 
@@ -287,8 +287,8 @@ int SweepTubesInHelper(int spines_fd, int tubes_fd) {
     if (r.tube.IsNull()) {
       out << "ERROR " << SingleLine(r.error) << "\n";
     } else {
-      const std::string text = ShapeBytes(r.tube);
-      out << "TUBE " << text.size() << "\n" << text;
+      const std::string bytes = ShapeBytes(r.tube);
+      out << "TUBE " << bytes.size() << "\n" << bytes;
     }
   }
   return out.flush() ? 0 : 4;

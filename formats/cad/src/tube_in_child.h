@@ -35,8 +35,8 @@ struct TubeSweepResult {
 
 /// MakeCableSolid for every sweep in one helper process (cablefit-sweep-child): a process start
 /// costs about 0.03 s, which dominated writing a harness of many cables when each had its own.
-/// When the batch's helper crashes or hangs, every sweep is run again in a helper of its own, so one bad spine costs only its own solid
-/// ("the tube sweep crashed in OpenCASCADE (signal ...)", "... did not finish within N s").
+/// When the batch's helper crashes or hangs, every sweep is run again in a helper of its own,
+/// so one bad spine costs only its own solid ("the tube sweep crashed in OpenCASCADE (signal ...)", "... did not finish within N s").
 /// Sweeps in this process when no helper can be started.
 std::vector<TubeSweepResult> MakeTubeSolidsInChild(const std::vector<CableSweep>& sweeps,
                                                    double max_seconds = 600.0);

@@ -82,8 +82,8 @@ inline constexpr int kHelperUsage = 64;
 bool WaitUntilTold();
 
 /// A helper started before its work is ready: the executable loads (~0.03 s for OCCT's modelling
-/// libraries, ~0.1 s for all 70 of its data exchange) while this process does other things, at nice 10, then blocks reading one byte
-/// from descriptor kGoFd. Its arguments and descriptors are fixed at Start, so the work goes
+/// libraries, ~0.1 s with its 70 data exchange ones) while this process does other things, at
+/// nice 10, then blocks reading one byte from descriptor kGoFd. Its arguments and descriptors are fixed at Start, so the work goes
 /// through files it was handed (MemoryFile). Run() sends the byte and waits as RunChildProcess
 /// does; an unused helper reads end-of-file when this object goes and exits (it is reaped).
 /// The parent-death signal of the helpers follows the thread that starts them: start them on
