@@ -148,6 +148,9 @@ void DiagnoseShapeCase(const DiagnoseCaseOptions& options, const ProgressCallbac
     out->notes.push_back(out->observation_source + ": " + DescribeNote(note));
   for (const EffectCandidate& c : d.candidates)
     out->candidates.emplace_back(ToString(c.effect), c.score);
+  for (const FoundEffect& f : d.effects)
+    out->effects.push_back(
+        {ToString(f.effect), f.clamp, f.interval, f.parameters, f.vectors, f.share});
   out->shape = std::move(d);
 }
 
@@ -207,6 +210,12 @@ void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallbac
   out->explanation = all.explanation;
   out->explained = all.explained;
   for (const auto& [effect, score] : all.candidates) out->candidates.emplace_back(ToString(effect), score);
+  if (all.effect != ForceEffect::kNone) {
+    // One effect explains what the fit removes of the mismatch (the rms over the same rows).
+    const double b = out->baseline.rms, f = out->fitted.rms;
+    out->effects.push_back({out->effect, std::nullopt, out->interval, out->parameters, {},
+                            b > 0 ? 1.0 - (f * f) / (b * b) : 0.0});
+  }
   for (std::size_t i = 0; i < refs.size(); ++i) {
     DiagnosedCurve c;
     c.file = refs[i]->file;
@@ -222,6 +231,13 @@ void DiagnoseForceCase(const DiagnoseCaseOptions& options, const ProgressCallbac
 }  // namespace
 
 const char* ToString(CaseKind kind) { return kind == CaseKind::kForce ? "force" : "shape"; }
+
+std::string EffectsName(const DiagnosedCase& d) {
+  if (d.effects.size() < 2) return d.effect;
+  std::string name;
+  for (const FoundEffectSummary& f : d.effects) name += (name.empty() ? "" : " + ") + f.effect;
+  return name;
+}
 
 DiagnosedCase DiagnoseCase(const std::string& case_file, const DiagnoseCaseOptions& options,
                            const ProgressCallback& progress) {

@@ -17,29 +17,70 @@ nlohmann::json DeviationJson(const Deviation& d) {
           {"rms_deviation", json::NumberOrNull(d.rms)}};
 }
 
+nlohmann::json IntervalJson(const std::optional<std::pair<double, double>>& interval) {
+  return interval ? nlohmann::json::array({interval->first, interval->second})
+                  : nlohmann::json(nullptr);
+}
+
+nlohmann::json ParametersJson(const std::map<std::string, double>& values,
+                              const std::map<std::string, Vec3>& vectors) {
+  nlohmann::json parameters = nlohmann::json::object();
+  for (const auto& [name, value] : values) parameters[name] = json::NumberOrNull(value);
+  for (const auto& [name, v] : vectors) parameters[name] = json::ToJson(v);
+  return parameters;
+}
+
 // A shape candidate's own fit, beyond the format's effect and score: its criterion, deviations
 // (thinned points, the fits' accuracy), where and how it acts, and whether its fit converged.
 void AddFitDetails(const EffectCandidate& e, nlohmann::json* c) {
-  nlohmann::json parameters = nlohmann::json::object();
-  for (const auto& [name, value] : e.parameters) parameters[name] = json::NumberOrNull(value);
-  for (const auto& [name, v] : e.vectors) parameters[name] = json::ToJson(v);
+  nlohmann::json parameters = ParametersJson(e.parameters, e.vectors);
   (*c)["bic"] = json::NumberOrNull(e.bic);
   (*c)["parameter_count"] = e.parameter_count;
   (*c)["max_deviation"] = json::NumberOrNull(e.max_deviation);
   (*c)["rms_deviation"] = json::NumberOrNull(e.rms_deviation);
-  (*c)["interval"] = e.interval ? nlohmann::json::array({e.interval->first, e.interval->second})
-                                : nlohmann::json(nullptr);
+  (*c)["interval"] = IntervalJson(e.interval);
   (*c)["clamp"] = e.clamp ? nlohmann::json(*e.clamp) : nlohmann::json(nullptr);
   (*c)["parameters"] = std::move(parameters);
   (*c)["converged"] = e.converged;
 }
 
+// Every effect found, dominant first: `[]` for none.
+nlohmann::json EffectsJson(const DiagnosedCase& d) {
+  nlohmann::json effects = nlohmann::json::array();
+  for (const FoundEffectSummary& f : d.effects)
+    effects.push_back({{"effect", f.effect},
+                       {"clamp", f.clamp ? nlohmann::json(*f.clamp) : nlohmann::json(nullptr)},
+                       {"interval", IntervalJson(f.interval)},
+                       {"parameters", ParametersJson(f.parameters, f.vectors)},
+                       {"share", json::NumberOrNull(f.share)}});
+  return effects;
+}
+
+// The pairs of effects the selection weighed, best first, with their joint fits.
+nlohmann::json CombinationsJson(const ShapeDiagnosis& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const CombinationCandidate& c : s.combinations) {
+    nlohmann::json effects = nlohmann::json::array(), clamps = nlohmann::json::array();
+    for (size_t i = 0; i < c.effects.size(); ++i) {
+      effects.push_back(ToString(c.effects[i]));
+      clamps.push_back(c.clamps[i] ? nlohmann::json(*c.clamps[i]) : nlohmann::json(nullptr));
+    }
+    out.push_back({{"effects", std::move(effects)},
+                   {"clamps", std::move(clamps)},
+                   {"score", json::NumberOrNull(c.score)},
+                   {"bic", json::NumberOrNull(c.bic)},
+                   {"parameter_count", c.parameter_count},
+                   {"max_deviation", json::NumberOrNull(c.max_deviation)},
+                   {"rms_deviation", json::NumberOrNull(c.rms_deviation)},
+                   {"converged", c.converged}});
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
-  nlohmann::json parameters = nlohmann::json::object();
-  for (const auto& [name, value] : d.parameters) parameters[name] = json::NumberOrNull(value);
-  for (const auto& [name, v] : d.vectors) parameters[name] = json::ToJson(v);
+  nlohmann::json parameters = ParametersJson(d.parameters, d.vectors);
   nlohmann::json candidates = nlohmann::json::array();
   for (const auto& [effect, score] : d.candidates) {
     nlohmann::json c = {{"effect", effect}, {"score", json::NumberOrNull(score)}};
@@ -53,8 +94,7 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
   j["case"] = d.recording.name;
   j["effect"] = d.effect;
   j["confidence"] = json::NumberOrNull(d.confidence);
-  j["interval"] = d.interval ? nlohmann::json::array({d.interval->first, d.interval->second})
-                             : nlohmann::json(nullptr);
+  j["interval"] = IntervalJson(d.interval);
   j["clamp"] = d.clamp ? nlohmann::json(*d.clamp) : nlohmann::json(nullptr);
   j["parameters"] = std::move(parameters);
   j["baseline"] = DeviationJson(d.baseline);
@@ -62,6 +102,8 @@ nlohmann::json DiagnosisToJson(const DiagnosedCase& d) {
   j["explained"] = d.explained;
   j["explanation"] = d.explanation;
   j["candidates"] = std::move(candidates);
+  j["effects"] = EffectsJson(d);
+  if (d.shape) j["combinations"] = CombinationsJson(*d.shape);
   if (d.shape) {
     // The test behind `explained`, so a reader can judge it.
     const ShapeAdequacy& a = d.shape->adequacy;

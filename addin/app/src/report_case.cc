@@ -1,5 +1,6 @@
 #include "cablefit/app/report_case.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -60,6 +61,33 @@ std::string ParametersTable(const DiagnosedCase& d) {
       << "]</td><td>" << HtmlEscape(unit) << " (world x, y, z)</td></tr>\n";
   }
   h << "</tbody></table>\n";
+  return h.str();
+}
+
+// Every effect found with where it acts and its share of the mismatch (a pair's parts each).
+std::string EffectsTable(const DiagnosedCase& d) {
+  std::ostringstream h;
+  h << "<table><thead><tr><th>#</th><th>effect</th><th>clamp</th><th>interval</th>"
+       "<th class=\"num\">share</th><th>of the mismatch</th><th>parameters</th></tr></thead>"
+       "<tbody>\n";
+  for (std::size_t i = 0; i < d.effects.size(); ++i) {
+    const FoundEffectSummary& f = d.effects[i];
+    std::string parameters;
+    for (const auto& [name, value] : f.parameters)
+      parameters += (parameters.empty() ? "" : ", ") + name + " " + FormatNumber(value, 4);
+    h << "<tr><td>" << i + 1 << "</td><td>" << HtmlEscape(f.effect) << "</td><td>"
+      << (f.clamp ? std::to_string(*f.clamp) : "\u2013") << "</td><td>"
+      << (f.interval ? HtmlEscape(FormatLength(f.interval->first) + " \u2013 " +
+                                  FormatLength(f.interval->second))
+                     : "\u2013")
+      << "</td><td class=\"num\">" << FormatNumber(100.0 * f.share, 3)
+      << " %</td><td><div class=\"bar\"><span style=\"width:"
+      << std::max(0.0, std::min(100.0, 100.0 * f.share)) << "%\"></span></div></td><td>"
+      << HtmlEscape(parameters) << "</td></tr>\n";
+  }
+  h << "</tbody></table>\n<p style=\"color:var(--muted);font-size:13px\">Share: the part of "
+       "the nominal model's mismatch (sum of squared offsets) each effect removes in the joint "
+       "fit, averaged over both orders of adding the effects.</p>\n";
   return h.str();
 }
 
@@ -156,7 +184,7 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
     << "</header>\n<main>\n";
 
   h << "<section class=\"card\"><h2>Verdict</h2><div class=\"facts\">\n"
-    << Fact("effect", HtmlEscape(d.effect))
+    << Fact(d.effects.size() > 1 ? "dominant effect" : "effect", HtmlEscape(d.effect))
     << Fact("confidence", FormatNumber(100.0 * d.confidence, 3) + " %")
     ;
   // A force test has no place along the cable and no clamp to blame: those facts are shape's.
@@ -198,6 +226,7 @@ std::string CaseReportHtml(const DiagnosedCase& d, const std::vector<CasePicture
                                " expected from noise, z " + FormatNumber(a.z, 3) + ")");
   }
   h << "</div>\n<p class=\"explanation\">" << HtmlEscape(d.explanation) << "</p>\n";
+  if (d.effects.size() > 1) h << "<h3>Effects found</h3>\n" << EffectsTable(d);
   if (!d.notes.empty()) {
     h << "<ul class=\"notes\">\n";
     for (const std::string& n : d.notes) h << "<li>" << HtmlEscape(n) << "</li>\n";

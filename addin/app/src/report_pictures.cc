@@ -118,13 +118,33 @@ Scene ModelScene(const DiagnosedCase& d, const Polyline& nodes, Eigen::VectorXd 
     scene.tubes.push_back(std::move(tube));
     start = end;
   }
-  if (d.interval) {
+  // Every effect found is highlighted where it acts and labelled with its share there.
+  std::vector<std::pair<double, double>> spans;
+  for (const FoundEffectSummary& f : d.effects)
+    if (f.interval) spans.push_back(*f.interval);
+  if (spans.empty() && d.interval) spans.push_back(*d.interval);
+  for (const auto& [from, to] : spans) {
     for (std::size_t t = 0; t < scene.tubes.size(); ++t) {
       const Eigen::VectorXd& s = scene.tubes[t].centreline.s;
-      const double a = std::max(d.interval->first, s[0]);
-      const double b = std::min(d.interval->second, s[s.size() - 1]);
+      const double a = std::max(from, s[0]);
+      const double b = std::min(to, s[s.size() - 1]);
       if (b > a) scene.highlights.push_back({static_cast<int>(t), a, b});
     }
+  }
+  for (std::size_t i = 0; i < d.effects.size(); ++i) {
+    const FoundEffectSummary& f = d.effects[i];
+    SceneLabel label;
+    label.text = (d.effects.size() > 1 ? std::to_string(i + 1) + ": " : "") + f.effect + " " +
+                 FormatNumber(100.0 * f.share, 2) + " %";
+    if (f.clamp && static_cast<std::size_t>(*f.clamp) < spec.supports.size())
+      label.position = spec.supports[static_cast<std::size_t>(*f.clamp)].position;
+    else if (f.interval)
+      label.position = SampleCenterline(nodes, Eigen::VectorXd::Constant(
+                                                   1, 0.5 * (f.interval->first + f.interval->second)))
+                           .points.col(0);
+    else
+      continue;
+    scene.labels.push_back(label);
   }
   // The recorded centre line, one ghost per seen stretch so that no line is drawn across a gap.
   for (const auto& [a, b] : seen) {
@@ -151,7 +171,7 @@ Scene ModelScene(const DiagnosedCase& d, const Polyline& nodes, Eigen::VectorXd 
     scene.supports.push_back(s);
   }
   scene.highlighted_support = d.clamp ? *d.clamp : -1;
-  scene.highlight_label = "where the effect acts";
+  scene.highlight_label = d.effects.size() > 1 ? "where the effects act" : "where the effect acts";
   scene.gravity = spec.gravity;
   return scene;
 }
@@ -184,13 +204,14 @@ DeviationTrace Trace(const std::string& name, Eigen::VectorXd s, Eigen::VectorXd
 
 std::vector<CasePicture> ShapePictures(const std::filesystem::path& dir, const DiagnosedCase& d) {
   const ShapeDiagnosis& sd = *d.shape;
+  const std::string model = EffectsName(d);
   std::vector<CasePicture> pictures;
   const Scene nominal = ModelScene(d, sd.nominal_solution.centerline, sd.observation_s,
                                    sd.baseline_deviation,
                                    "nominal model: max deviation " + FormatLength(d.baseline.max));
   const Scene fitted = ModelScene(
       d, sd.fitted_solution.centerline, sd.observation_s, sd.fitted_deviation,
-      "fitted model (" + d.effect + "): max deviation " + FormatLength(d.fitted.max));
+      "fitted model (" + model + "): max deviation " + FormatLength(d.fitted.max));
   RenderOptions ro;
   ro.width = 1600;
   ro.height = 1150;
@@ -206,14 +227,18 @@ std::vector<CasePicture> ShapePictures(const std::filesystem::path& dir, const D
       "Deviation of the recorded centre line from the simulated cable, nominal model (top) and "
       "fitted model (bottom) on one colour scale; grey tube: not seen by the recording; thin line: "
       "the recorded centre line";
-  if (d.interval) caption += "; red halo: the interval where the effect acts";
-  if (d.clamp) caption += "; highlighted marker: clamp " + std::to_string(*d.clamp);
+  if (d.effects.size() > 1) {
+    caption += "; red halo and labels: where each effect acts, with its share of the mismatch";
+  } else {
+    if (d.interval) caption += "; red halo: the interval where the effect acts";
+    if (d.clamp) caption += "; highlighted marker: clamp " + std::to_string(*d.clamp);
+  }
   pictures.push_back({"deviation-views.png", caption + "."});
 
   const Intervals gaps = Gaps(SeenIntervals(d), d.recording.nominal.length);
   const std::vector<DeviationTrace> traces = {
       Trace("nominal", sd.observation_s, sd.baseline_deviation, gaps),
-      Trace("fitted (" + d.effect + ")", sd.observation_s, sd.fitted_deviation, gaps)};
+      Trace("fitted (" + model + ")", sd.observation_s, sd.fitted_deviation, gaps)};
   PlotSpec spec = DeviationAlongArcLengthChart(traces, gaps);
   spec.title = "Deviation along the cable";
   spec.x_range = std::make_pair(0.0, d.recording.nominal.length);

@@ -22,7 +22,7 @@ std::string Fixed(double v, int digits) {
   return os.str();
 }
 
-double Parameter(const ShapeDiagnosis& d, const char* name) {
+double Parameter(const FoundEffect& d, const char* name) {
   const auto it = d.parameters.find(name);
   return it == d.parameters.end() ? 0.0 : it->second;
 }
@@ -32,17 +32,13 @@ double ClampS(const RodSpec& nominal, double clamp) {
   return k < nominal.supports.size() ? nominal.supports[k].s : 0.0;
 }
 
-// What the chosen effect is, in the cable's terms.
-std::string Effect(const ShapeDiagnosis& d, const RodSpec& nominal) {
+// What one found effect is, in the cable's terms, ending with `tail`.
+std::string Sentence(const FoundEffect& d, const RodSpec& nominal, const std::string& tail) {
   std::ostringstream ex;
-  const std::string improve = "; fitting it reduces the max deviation from " +
-                              Mm(d.baseline_max) + " to " + Mm(d.fitted_max) + ".";
+  const std::string& improve = tail;
   const double clamp_s = d.clamp ? ClampS(nominal, *d.clamp) : 0.0;
   switch (d.effect) {
     case ShapeEffect::kNone:
-      ex << "The nominal model explains the recording within its noise (max deviation "
-         << Mm(d.baseline_max) << ", rms " << Mm(d.baseline_rms) << "); no effect improves it "
-         << "enough to justify its parameters.";
       break;
     case ShapeEffect::kIntrinsicCurvature: {
       const double kappa = Parameter(d, "curvature");
@@ -109,6 +105,29 @@ std::string Effect(const ShapeDiagnosis& d, const RodSpec& nominal) {
   return ex.str();
 }
 
+std::string Percent(double share) {
+  return std::isfinite(share) ? Fixed(100.0 * share, 0) + " %" : "an unknown part";
+}
+
+// What the diagnosis found: nothing, one effect, or each of several with its share.
+std::string Effect(const ShapeDiagnosis& d, const RodSpec& nominal) {
+  const std::string reduces =
+      "reduces the max deviation from " + Mm(d.baseline_max) + " to " + Mm(d.fitted_max) + ".";
+  if (d.effects.empty()) {
+    return "The nominal model explains the recording within its noise (max deviation " +
+           Mm(d.baseline_max) + ", rms " + Mm(d.baseline_rms) +
+           "); no effect improves it enough to justify its parameters.";
+  }
+  if (d.effects.size() == 1) return Sentence(d.effects.front(), nominal, "; fitting it " + reduces);
+  std::ostringstream ex;
+  ex << d.effects.size() << " pieces of physics were left out; fitting them together " << reduces;
+  for (size_t i = 0; i < d.effects.size(); ++i)
+    ex << " (" << i + 1 << ") "
+       << Sentence(d.effects[i], nominal,
+                   ": " + Percent(d.effects[i].share) + " of the mismatch (sum of squares).");
+  return ex.str();
+}
+
 }  // namespace
 
 std::string ExplainShapeDiagnosis(const ShapeDiagnosis& d, const RodSpec& nominal) {
@@ -118,7 +137,8 @@ std::string ExplainShapeDiagnosis(const ShapeDiagnosis& d, const RodSpec& nomina
     // A best fit that leaves far more than the noise is not a diagnosis: say what it leaves and
     // what to check instead of a confident story.
     const ShapeAdequacy& a = d.adequacy;
-    ex << "No effect of the catalogue explains the recording: the best fit (" << ToString(d.effect)
+    ex << "No effect of the catalogue, alone or in pairs, explains the recording: the best fit ("
+       << ToString(d.effect)
        << ") leaves a max deviation of " << Mm(d.fitted_max) << " (rms " << Mm(d.fitted_rms)
        << ") against a noise of " << Mm(a.noise_sigma) << " (chi-square with "
        << Fixed(a.noise_allowance, 1) << " times that noise: " << Fixed(a.chi_square, 0)
@@ -132,6 +152,7 @@ std::string ExplainShapeDiagnosis(const ShapeDiagnosis& d, const RodSpec& nomina
   ex << effect;
   // A close runner-up is part of the answer: the scores alone do not separate them.
   for (const EffectCandidate& c : d.candidates) {
+    if (d.effects.size() > 1) break;
     if (c.effect == d.effect || c.score < 0.25) continue;
     ex << " The recording hardly separates it from " << ToString(c.effect) << " (scores "
        << Fixed(d.confidence, 2) << " and " << Fixed(c.score, 2) << ").";

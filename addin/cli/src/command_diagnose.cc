@@ -154,7 +154,7 @@ int RunDiagnose(const DiagnoseArgs& a) {
         char line[512];
         // Confidence in per cent, as the reports give it.
         std::snprintf(line, sizeof line, "%s: %s, confidence %.0f %%, %s", d.recording.name.c_str(),
-                      d.effect.c_str(), 100.0 * d.confidence, FormatSeconds(seconds).c_str());
+                      EffectsName(d).c_str(), 100.0 * d.confidence, FormatSeconds(seconds).c_str());
         if (!a.quiet) bar.PrintLine(stdout, line);
       } catch (...) {
         o.row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -51,8 +51,18 @@ FitContext MakeFitContext(const Eigen::Matrix3Xd& points, const Eigen::VectorXd&
   return ctx;
 }
 
+double EvaluateFitCost(const FitContext& ctx, RodSimulator sim, const RodSpec& spec,
+                       Eigen::VectorXd* offsets, RodSolution* solution) {
+  Eigen::VectorXd r;
+  if (!Residual(ctx, &sim, spec, &r, solution, /*patient=*/true)) return INFINITY;
+  const double cost = 0.5 * r.squaredNorm();
+  if (offsets) *offsets = std::move(r);
+  return cost;
+}
+
 Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, const EffectModel& m,
-              int max_iterations, int threads) {
+              const FitOptions& options) {
+  const int max_iterations = options.max_iterations, threads = options.threads;
   struct Run {
     RodSimulator sim;
     LmResult lm;
@@ -62,7 +72,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
     bool first = true;
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
-      const bool patient = first;
+      const bool patient = first && options.patient_start;
       first = false;
       return Residual(ctx, &r->sim, m.apply(x), res, nullptr, patient);
     };
@@ -113,7 +123,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   // A best run stopped by its iteration limit while still descending is carried on: a fit that
   // has not reached its optimum would lose the comparison to a simpler model, or leave a
   // residual that fails the adequacy test, for a reason that is not in the recording.
-  if (!runs.empty())
+  if (!runs.empty() && options.polish)
     for (int more = 0; more < 3 && !runs.front().lm.converged; ++more) {
       Run& r = runs.front();
       const LmResult before = r.lm;
@@ -125,7 +135,6 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
       if (!(r.lm.cost < (1.0 - 1e-3) * before.cost)) break;
     }
   Fit best;
-  best.model = &m;
   if (!runs.empty()) {
     best.x = runs.front().lm.x;
     best.cost = runs.front().lm.cost;

@@ -26,7 +26,6 @@ FitContext MakeFitContext(const Eigen::Matrix3Xd& points, const Eigen::VectorXd&
                           double length);
 
 struct Fit {
-  const EffectModel* model = nullptr;
   Eigen::VectorXd x;        // the model's fit parameters
   double cost = INFINITY;   // 1/2 |offsets|^2 [m^2]
   Eigen::VectorXd offsets;  // 3n [m] offsets of the thinned points from the fitted curve
@@ -38,9 +37,27 @@ struct Fit {
   int lm_iterations = 0;
 };
 
+/// The fits' cost (1/2 |offsets|^2 [m^2]) of `spec` solved warm from `sim` (patiently);
+/// INFINITY when it cannot be solved. `offsets` and `solution` (may be null) receive the rest.
+double EvaluateFitCost(const FitContext& ctx, RodSimulator sim, const RodSpec& spec,
+                       Eigen::VectorXd* offsets = nullptr, RodSolution* solution = nullptr);
+
+struct FitOptions {
+  int max_iterations = 30;  // Levenberg-Marquardt iterations per start
+  int threads = 1;          // the starts run in parallel, with the same result as on one
+  /// A best run stopped by its iteration limit is carried on (a fit compared with others must
+  /// reach its optimum); false where the fit only ranks candidates for a later fit.
+  bool polish = true;
+  /// Each start's first solve may use the solver's continuation: needed where a start is far
+  /// from the equilibria it is solved from (a single effect from the nominal). False where the
+  /// starts come from fits that were solved already: a start that a plain Newton solve cannot
+  /// reach is then dropped at once instead of being continued for seconds.
+  bool patient_start = true;
+};
+
 /// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the
-/// nominal, each warm); the starts run on `threads` threads, with the same result as on one.
+/// nominal, each warm).
 Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases,
-              const EffectModel& model, int max_iterations, int threads = 1);
+              const EffectModel& model, const FitOptions& options);
 
 }  // namespace cablefit

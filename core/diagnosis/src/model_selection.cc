@@ -14,9 +14,9 @@ ModelRanking RankModels(const std::vector<ModelFit>& fits, int residuals, double
   for (const ModelFit& f : fits)
     if (f.ok) best_cost = std::min(best_cost, f.cost);
   if (!std::isfinite(best_cost)) return out;
-  // The best model's residual variance (6: about the most parameters a model has), floored by
-  // the recording's noise.
-  out.sigma2 = std::max(2.0 * best_cost / std::max(1, residuals - 6), noise_sigma * noise_sigma);
+  // The best model's residual variance (8: about the most parameters a model has, a pair of
+  // curvature spans), floored by the recording's noise.
+  out.sigma2 = std::max(2.0 * best_cost / std::max(1, residuals - 8), noise_sigma * noise_sigma);
   const double log_n = std::log(static_cast<double>(residuals));
   auto bic = [&](std::size_t i) {
     return 2.0 * fits[i].cost / out.sigma2 + fits[i].parameters * log_n;
@@ -32,7 +32,7 @@ ModelRanking RankModels(const std::vector<ModelFit>& fits, int residuals, double
     RankedModel r;
     r.fit = i;
     r.bic = bic(i);
-    r.criterion = r.bic + (fits[i].is_null ? 0.0 : null_margin);
+    r.criterion = r.bic + fits[i].effects * null_margin;
     out.ranked.push_back(r);
   }
   std::sort(out.ranked.begin(), out.ranked.end(), [](const RankedModel& a, const RankedModel& b) {

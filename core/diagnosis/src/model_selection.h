@@ -3,9 +3,9 @@
 //
 // BIC = chi^2 + k ln(m) with m residual components, chi^2 = |offsets|^2 / sigma^2 and sigma^2
 // the best fit's residual variance, floored by the recording's own noise (a fit cannot be
-// better than the recording). The null model (nominal) is favoured by prior odds: every other
-// model pays `null_margin` on top of its BIC, and scores, order and choice all include it, so the
-// chosen model is always the best-scored one. Models of one group (one effect at several clamps)
+// better than the recording). Fewer effects are favoured by prior odds: every effect a model
+// names pays `null_margin` on top of its BIC (the nominal none, a pair twice), and scores, order
+// and choice all include it, so the chosen model is always the best-scored one. Models of one group (one effect at several clamps)
 // compete for one candidate: the group's best BIC stands for it.
 #pragma once
 
@@ -20,13 +20,15 @@ struct ModelFit {
   int parameters = 0;    // physical parameters counted by the criterion
   double cost = 0.0;     // 1/2 |offsets|^2 [m^2]
   bool ok = false;       // false: the model could not be fitted (not a candidate)
-  bool is_null = false;  // the nominal model: pays no margin
+  /// How many effects the model names: 0 for the nominal, 2 for a pair. Each one pays the
+  /// margin, so that a second effect must win its place as the first did.
+  int effects = 1;
 };
 
 struct RankedModel {
   std::size_t fit = 0;     // index into the fits
   double bic = 0.0;        // [-]
-  double criterion = 0.0;  // bic + the margin (0 for the null model)
+  double criterion = 0.0;  // bic + the margin per effect (none for the null model)
   double score = 0.0;      // posterior weight in [0, 1]; 0 for a rejected fit
 };
 

@@ -5,12 +5,15 @@
 //    shape (this selects the equilibrium branch) and from starts that settle elsewhere.
 // 3. FitEffect (effect_fit) for every model of the catalogue (shape_effects): Levenberg-Marquardt
 //    on the seen points, screening many starts where the problem is not convex.
-// 4. RankModels (model_selection): BIC with the noise estimated from the best model's residual
+// 4. SearchEffectPairs (effect_pair_search), when the best single fit leaves more than the
+//    recording's noise: pairs of effects by forward selection, joint refits and a swap.
+// 5. RankModels (model_selection): BIC with the noise estimated from the best model's residual
 //    (floored by the recording's own noise); `none` unless an effect wins by min_bic_gain. The
 //    best fit's residual against the recording's noise tells whether anything explains it.
-// 5. SolveFinal (shape_final_solve): nominal and chosen model at full accuracy, the next
+// 6. SolveFinal (shape_final_solve): nominal and chosen model at full accuracy, the next
 //    candidate when a fit does not hold there; deviations; each candidate described in the
-//    catalogue's terms by its model's `describe`.
+//    catalogue's terms by its model's `describe`; the chosen model's effects, each with its
+//    share of the mismatch (found_effects).
 #include "cablefit/core/diagnosis/shape_diagnosis.h"
 
 #include <algorithm>
@@ -21,6 +24,8 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/solver_failure.h"
 #include "effect_fit.h"
+#include "effect_pair_search.h"
+#include "found_effects.h"
 #include "model_selection.h"
 #include "shape_effects.h"
 #include "shape_final_solve.h"
@@ -32,16 +37,28 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Fits of one group compete for one candidate: an effect at any clamp, a pair of effects (in
+// either order, at any clamps).
+int GroupOf(const std::vector<EffectModel>& models, const EffectModel& m) {
+  if (!m.is_combination()) return static_cast<int>(m.effect);
+  int a = static_cast<int>(models[static_cast<size_t>(m.parts[0])].effect);
+  int b = static_cast<int>(models[static_cast<size_t>(m.parts[1])].effect);
+  if (a > b) std::swap(a, b);
+  return 1000 + 100 * a + b;
+}
+
 std::vector<internal::ModelFit> SelectionInput(const std::vector<EffectModel>& models,
                                                const std::vector<Fit>& fits) {
   std::vector<internal::ModelFit> in;
   for (size_t i = 0; i < fits.size(); ++i) {
     internal::ModelFit m;
-    m.group = static_cast<int>(models[i].effect);
+    m.group = GroupOf(models, models[i]);
     m.parameters = models[i].physical_parameters;
     m.cost = fits[i].cost;
     m.ok = fits[i].ok;
-    m.is_null = models[i].effect == ShapeEffect::kNone;
+    m.effects = models[i].is_combination() ? static_cast<int>(models[i].parts.size())
+                : models[i].effect == ShapeEffect::kNone ? 0
+                                                          : 1;
     in.push_back(m);
   }
   return in;
@@ -67,6 +84,21 @@ ShapeAdequacy Assess(const std::vector<EffectModel>& models, const std::vector<F
   return a;
 }
 
+// Whether the best single model leaves more than `allowance` times the recording's noise, so
+// that a second effect could have something to explain; `residual` receives its rms offset
+// component over the noise.
+bool NeedsPairSearch(const std::vector<EffectModel>& models, const std::vector<Fit>& fits,
+                     int points, double noise_sigma, double allowance, double* residual) {
+  size_t best = fits.size();
+  for (size_t i = 0; i < fits.size(); ++i)
+    if (fits[i].ok && (best == fits.size() || fits[i].cost < fits[best].cost)) best = i;
+  if (best == fits.size()) return false;
+  const int dof = 2 * points - models[best].physical_parameters;
+  *residual = std::sqrt(2.0 * fits[best].cost / std::max(1, dof)) / noise_sigma;
+  if (!(allowance > 0)) return false;
+  return !internal::TestAdequacy(fits[best].cost, dof, noise_sigma, allowance).passed;
+}
+
 EffectCandidate Candidate(const EffectModel& model, const Fit& fit,
                           const internal::RankedModel& rank,
                           const EffectDescriptionContext& context) {
@@ -82,6 +114,22 @@ EffectCandidate Candidate(const EffectModel& model, const Fit& fit,
   c.parameters = std::move(d.parameters);
   c.vectors = std::move(d.vectors);
   c.interval = d.interval;
+  return c;
+}
+
+CombinationCandidate Combination(const std::vector<EffectModel>& models, const Fit& fit,
+                                 const internal::RankedModel& rank) {
+  const EffectModel& m = models[rank.fit];
+  CombinationCandidate c;
+  for (int part : m.parts) {
+    c.effects.push_back(models[static_cast<size_t>(part)].effect);
+    c.clamps.push_back(models[static_cast<size_t>(part)].clamp);
+  }
+  c.score = rank.score;
+  c.bic = rank.bic;
+  c.parameter_count = m.physical_parameters;
+  c.converged = fit.converged;
+  OffsetStatistics(fit.offsets, &c.max_deviation, &c.rms_deviation);
   return c;
 }
 
@@ -138,20 +186,24 @@ void DescribeResult(const PreparedRecording& rec, const FitContext& ctx,
   EffectDescriptionContext context;
   context.mismatch = MismatchInterval(out->observation_s, out->baseline_deviation);
   for (const internal::RankedModel& r : ranking.ranked) {
+    if (r.fit == chosen) out->confidence = r.score;
+    if (models[r.fit].is_combination()) {
+      out->combinations.push_back(Combination(models, fits[r.fit], r));
+      continue;
+    }
     context.solution = r.fit == chosen ? &out->fitted_solution : &fits[r.fit].solution;
     out->candidates.push_back(Candidate(models[r.fit], fits[r.fit], r, context));
   }
-  const EffectModel& cm = models[chosen];
-  out->effect = cm.effect;
-  out->clamp = cm.clamp;
-  for (const EffectCandidate& c : out->candidates)
-    if (c.effect == out->effect) out->confidence = c.score;
-  context.solution = &out->fitted_solution;
-  EffectDescription d = cm.describe(fits[chosen].x, context);
-  out->parameters = std::move(d.parameters);
-  out->vectors = std::move(d.vectors);
-  out->units = std::move(d.units);
-  out->interval = d.interval;
+  out->effects = DescribeFoundEffects(rec, ctx, models, chosen, fits[chosen].x, final_solves,
+                                      context.mismatch);
+  if (out->effects.empty()) return;
+  FoundEffect dominant = out->effects.front();
+  out->effect = dominant.effect;
+  out->clamp = dominant.clamp;
+  out->parameters = std::move(dominant.parameters);
+  out->vectors = std::move(dominant.vectors);
+  out->units = std::move(dominant.units);
+  out->interval = dominant.interval;
 }
 
 }  // namespace
@@ -166,6 +218,7 @@ bool ShapeDiagnosisOptions::IsValid(std::string* why) const {
   if (max_points < 10) return fail("max_points must be >= 10");
   if (!(noise_allowance >= 1.0)) return fail("noise_allowance must be >= 1");
   if (threads < 1) return fail("threads must be >= 1");
+  if (!(pair_search_allowance >= 0)) return fail("pair_search_allowance must be >= 0");
   return true;
 }
 
@@ -197,17 +250,36 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   stage = Clock::now();
   progress(0.05, "nominal");
 
-  const std::vector<EffectModel> models =
+  std::vector<EffectModel> models =
       BuildEffectModels(nominal, branches.reaction_moment, ctx.points, ctx.s);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
-    fits.push_back(FitEffect(ctx, branches.bases, models[i], options.max_iterations,
-                             options.threads));
-    progress(0.05 + 0.85 * (i + 1) / models.size(), ToString(models[i].effect));
+    fits.push_back(FitEffect(ctx, branches.bases, models[i],
+                             {options.max_iterations, options.threads, true, true}));
+    progress(0.05 + 0.55 * (i + 1) / models.size(), ToString(models[i].effect));
     out.cost.forward_solves += fits.back().forward_solves;
     out.cost.lm_iterations += fits.back().lm_iterations;
   }
   out.cost.fits_seconds = since(stage);
+  stage = Clock::now();
+
+  double single_residual = 0.0;
+  const bool search_pairs = NeedsPairSearch(models, fits, n, noise_sigma,
+                                            options.pair_search_allowance, &single_residual);
+  if (search_pairs) {
+    PairSearchOptions po;
+    po.max_iterations = options.max_iterations;
+    po.threads = options.threads;
+    PairSearch pairs = SearchEffectPairs(ctx, branches.bases, nominal, models, fits, po);
+    out.cost.forward_solves += pairs.forward_solves;
+    out.cost.lm_iterations += pairs.lm_iterations;
+    for (size_t i = 0; i < pairs.models.size(); ++i) {
+      models.push_back(std::move(pairs.models[i]));
+      fits.push_back(std::move(pairs.fits[i]));
+    }
+  }
+  out.cost.pairs_seconds = since(stage);
+  progress(0.9, "pairs");
   stage = Clock::now();
 
   const Selection selection(models, fits, n, noise_sigma, options.min_bic_gain);
@@ -217,6 +289,8 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
   const size_t chosen = final_solves.chosen;
   out.adequacy = Assess(models, fits, final_solves.rejected, selection.none_index(), n,
                         noise_sigma, options.noise_allowance);
+  out.adequacy.single_residual = single_residual;
+  out.adequacy.pairs_searched = search_pairs;
   out.explained = out.adequacy.chi_square <= out.adequacy.limit;
   out.notes.insert(out.notes.end(), final_solves.notes.begin(), final_solves.notes.end());
   if (fits[chosen].branch > 0) {

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 #include "contact_frame.h"
@@ -66,7 +67,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.effect = ShapeEffect::kNone;
     m.scale = scales({});
     m.starts = {Eigen::VectorXd(0)};
-    m.apply = [=](const Eigen::VectorXd&) { return nominal; };
+    m.change = [](const Eigen::VectorXd&, RodSpec*) {};
     m.describe = [](const Eigen::VectorXd&, const EffectDescriptionContext&) {
       return EffectDescription{};
     };
@@ -84,15 +85,13 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
         x << L * (i + 0.5) / 6, w, 0.0, 0.0;
         m.starts.push_back(x);
       }
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
+    m.change = [=](const Eigen::VectorXd& x, RodSpec* s) {
       NaturalCurvatureSpec nc;
       std::tie(nc.s_start, nc.s_end) = CurvedSpan(x, L);
       if (nc.s_end <= nc.s_start) nc.s_end = std::min(L, nc.s_start + 0.01 * L);
       nc.ramp = 0.2 * (nc.s_end - nc.s_start);
       nc.kappa = Vec3(x[2], x[3], 0.0);
-      s.natural_curvature.push_back(nc);
-      return s;
+      s->natural_curvature.push_back(nc);
     };
     m.describe = [=](const Eigen::VectorXd& x, const EffectDescriptionContext&) {
       EffectDescription d;
@@ -115,18 +114,19 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     // x = (rot_d1, rot_d2)
     m.scale = scales({0.02, 0.02});
     m.starts = {Eigen::VectorXd::Zero(2)};
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
-      SupportSpec& sp = s.supports[k];
+    // The rotation's axes are the nominal clamp's, also when another effect (a twist preload)
+    // has turned the clamp already, so that the parameters mean the same in every combination.
+    const Frame nominal_frame = FrameOf(nominal.supports[static_cast<size_t>(k)]);
+    m.change = [=](const Eigen::VectorXd& x, RodSpec* s) {
+      SupportSpec& sp = s->supports[static_cast<size_t>(k)];
       const Frame f = FrameOf(sp);
-      const Vec3 rv = ClampRotation(f, x);
+      const Vec3 rv = ClampRotation(nominal_frame, x);
       const double a = rv.norm();
       if (a > 0) {
         const Eigen::AngleAxisd rot(a, rv / a);
         sp.tangent = rot * f.d3;
         sp.normal = rot * f.d1;
       }
-      return s;
     };
     m.describe = [=](const Eigen::VectorXd& x, const EffectDescriptionContext& c) {
       EffectDescription d;
@@ -147,10 +147,8 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     // x = (log_ratio)
     m.scale = scales({0.05});
     m.starts = {Eigen::VectorXd::Zero(1)};
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
-      s.material.linear_density *= std::exp(x[0]);
-      return s;
+    m.change = [](const Eigen::VectorXd& x, RodSpec* s) {
+      s->material.linear_density *= std::exp(x[0]);
     };
     m.describe = [](const Eigen::VectorXd& x, const EffectDescriptionContext& c) {
       EffectDescription d;
@@ -177,10 +175,8 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
         x << radius * std::cos(i * M_PI / 4), radius * std::sin(i * M_PI / 4);
         m.starts.push_back(x);
       }
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
-      std::tie(s.material.bending_ratio, s.material.principal_angle) = Anisotropy(x);
-      return s;
+    m.change = [](const Eigen::VectorXd& x, RodSpec* s) {
+      std::tie(s->material.bending_ratio, s->material.principal_angle) = Anisotropy(x);
     };
     m.describe = [](const Eigen::VectorXd& x, const EffectDescriptionContext& c) {
       EffectDescription d;
@@ -213,10 +209,8 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
           recorded, recorded_s, ContactPosition(x, L), 0.03 * L, gravity);
       return Vec3(x[1] * f.up + x[2] * f.side);
     };
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
-      s.point_loads.push_back({ContactPosition(x, L), force(x)});
-      return s;
+    m.change = [=](const Eigen::VectorXd& x, RodSpec* s) {
+      s->point_loads.push_back({ContactPosition(x, L), force(x)});
     };
     // The contact is reported as a short span: a few diameters, at least 1 % of the cable.
     const double half = std::max(2.0 * nominal.material.diameter, 0.01 * L);
@@ -246,11 +240,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.scale = scales({0.05});
     for (double a : {0.0, 0.8, -0.8, 1.6, -1.6, 2.4, -2.4})
       m.starts.push_back(Eigen::VectorXd::Constant(1, a));
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
-      RotateClampAboutTangent(k, x[0], &s);
-      return s;
-    };
+    m.change = [=](const Eigen::VectorXd& x, RodSpec* s) { RotateClampAboutTangent(k, x[0], s); };
     // For a cable that bends alike in every direction and has no natural curvature, the
     // centreline depends on the clamps' twist only through the twist between them (the twisting
     // moment is constant along it; pins and clips pass it on): with exactly two clamps that hold
@@ -297,10 +287,9 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     const double moment = k < static_cast<int>(reaction_moment.size()) ? reaction_moment[k] : 0.0;
     const double c0 = 0.02 / std::max(moment, 1e-9);
     for (double f : {0.3, 3.0}) m.starts.push_back(Eigen::VectorXd::Constant(1, std::log(f * c0)));
-    m.apply = [=](const Eigen::VectorXd& x) {
-      RodSpec s = nominal;
-      s.supports[k].compliance = Mat3::Identity() * std::exp(LogCompliance(x));
-      return s;
+    m.change = [=](const Eigen::VectorXd& x, RodSpec* s) {
+      s->supports[static_cast<size_t>(k)].compliance =
+          Mat3::Identity() * std::exp(LogCompliance(x));
     };
     m.describe = [](const Eigen::VectorXd& x, const EffectDescriptionContext& c) {
       EffectDescription d;
@@ -311,7 +300,15 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     };
     models.push_back(m);
   }
+  const auto base = std::make_shared<const RodSpec>(nominal);
+  for (EffectModel& m : models) m.base = base;
   return models;
+}
+
+RodSpec EffectModel::apply(const Eigen::VectorXd& x) const {
+  RodSpec s = *base;
+  change(x, &s);
+  return s;
 }
 
 }  // namespace cablefit

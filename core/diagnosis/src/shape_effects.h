@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -43,11 +44,23 @@ struct EffectModel {
   std::optional<int> clamp;             // clamp (support) index for clamp effects
   Eigen::VectorXd scale;                // typical size of every parameter
   std::vector<Eigen::VectorXd> starts;  // starting physical parameters
-  /// Parameters -> the changed spec.
-  std::function<RodSpec(const Eigen::VectorXd&)> apply;
+  /// Parameters -> the change made to a spec: the nominal, or, when effects act together, the
+  /// spec another effect has changed already.
+  std::function<void(const Eigen::VectorXd&, RodSpec*)> change;
   /// Parameters -> the change in the catalogue's terms.
   std::function<EffectDescription(const Eigen::VectorXd&, const EffectDescriptionContext&)>
       describe;
+  /// The spec `change` is made to.
+  std::shared_ptr<const RodSpec> base;
+  /// A combination of effects (effect_combination.h): the single models it is made of (indices
+  /// into the list of single models) and where each one's parameters start in x; empty for a
+  /// single effect.
+  std::vector<int> parts;
+  std::vector<int> part_offsets;
+
+  /// The changed spec.
+  RodSpec apply(const Eigen::VectorXd& x) const;
+  bool is_combination() const { return !parts.empty(); }
 };
 
 /// Rotates support `clamp`'s normal by `angle` [rad] about its tangent (right-hand rule).

@@ -8,9 +8,9 @@
 namespace cablefit::internal {
 namespace {
 
-ModelFit Null(double cost) { return {0, 0, cost, true, true}; }
+ModelFit Null(double cost) { return {0, 0, cost, true, 0}; }
 ModelFit Effect(int group, int parameters, double cost) {
-  return {group, parameters, cost, true, false};
+  return {group, parameters, cost, true, 1};
 }
 
 double ScoreOf(const ModelRanking& r, std::size_t fit) {
@@ -40,6 +40,21 @@ TEST(ModelSelectionTest, TheNullModelWinsUnlessAnEffectGainsTheMargin) {
     EXPECT_DOUBLE_EQ(m.criterion - m.bic, m.fit == 0 ? 0.0 : 10.0);
 }
 
+TEST(ModelSelectionTest, ASecondEffectPaysTheMarginAgain) {
+  // A pair (group 10, two effects) that gains a little over the best single effect loses to it;
+  // one that gains far more than the margin and its parameters' price wins.
+  ModelFit pair = Effect(10, 4, 0.97e-8);
+  pair.effects = 2;
+  const std::vector<ModelFit> close = {Null(1e-6), Effect(1, 2, 1e-8), pair};
+  const ModelRanking r = RankModels(close, 1000, 1e-5, 10.0);
+  EXPECT_EQ(r.ranked.front().fit, 1u);
+  for (const RankedModel& m : r.ranked)
+    EXPECT_DOUBLE_EQ(m.criterion - m.bic, m.fit == 0 ? 0.0 : m.fit == 2 ? 20.0 : 10.0);
+  pair.cost = 0.2e-8;
+  const ModelRanking far = RankModels({Null(1e-6), Effect(1, 2, 1e-8), pair}, 1000, 1e-5, 10.0);
+  EXPECT_EQ(far.ranked.front().fit, 2u);
+}
+
 TEST(ModelSelectionTest, TheNoiseLevelScalesTheDecision) {
   // The same two fits: against a quiet recording the effect's gain is far beyond its price,
   // against a noisy one (the floor of sigma^2) it is within the noise.
@@ -51,7 +66,7 @@ TEST(ModelSelectionTest, TheNoiseLevelScalesTheDecision) {
   EXPECT_EQ(noisy.ranked.front().fit, 0u);
   EXPECT_GT(noisy.ranked.front().score, 0.99);
   // The quiet recording's variance is the best fit's residual per degree of freedom.
-  EXPECT_NEAR(quiet.sigma2, 2.0 * 1e-8 / (200 - 6), 1e-22);
+  EXPECT_NEAR(quiet.sigma2, 2.0 * 1e-8 / (200 - 8), 1e-22);
 }
 
 TEST(ModelSelectionTest, TwoModelsThatScoreAlikeShareTheWeight) {

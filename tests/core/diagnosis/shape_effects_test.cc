@@ -62,7 +62,7 @@ TEST(ShapeEffectsTest, EveryModelIsComplete) {
     EXPECT_EQ(m.scale.size(), m.physical_parameters);
     ASSERT_FALSE(m.starts.empty());
     for (const Eigen::VectorXd& x : m.starts) EXPECT_EQ(x.size(), m.physical_parameters);
-    ASSERT_TRUE(m.apply && m.describe);
+    ASSERT_TRUE(m.change && m.describe && m.base);
     const EffectDescription d = m.describe(m.starts.front(), {});
     for (const auto& [name, value] : d.parameters) EXPECT_TRUE(d.units.count(name)) << name;
     for (const auto& [name, value] : d.vectors) EXPECT_TRUE(d.units.count(name)) << name;

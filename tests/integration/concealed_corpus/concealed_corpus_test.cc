@@ -22,77 +22,15 @@
 
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/core/diagnosis/shape_diagnosis.h"
-#include "cablefit/formats/scan_centerline_extractor.h"
-#include "synthetic_tube_scan.h"
+#include "concealed_cases.h"
 #include "test_support.h"
 
 namespace cablefit {
 namespace {
 
-struct Layout {
-  const char* name;
-  double span;  // clamp distance / length
-  double drop;  // vertical offset of the far clamp / length
-  double yaw;   // far clamp's lateral offset angle
-  Vec3 t0, t1;  // clamp tangents
-};
-
-// `gravity_number` > 0 sets w L^3 / EI instead of drawing it.
-RodSpec MakeNominal(const Layout& lay, std::mt19937& rng, double gravity_number = 0.0) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  RodSpec s;
-  s.length = 0.45 + 0.3 * u(rng);
-  s.material.bending_stiffness = 0.005 + 0.012 * u(rng);
-  s.material.torsional_stiffness = 0.8 * s.material.bending_stiffness;
-  s.material.diameter = 0.005 + 0.004 * u(rng);
-  // Gravity number w L^3 / EI between 2 (stiff, little sag) and 35 (visibly sagging, not a
-  // string).
-  const double drawn = 2 + 33 * u(rng);
-  const double gn = gravity_number > 0 ? gravity_number : drawn;
-  s.material.linear_density = gn * s.material.bending_stiffness / (9.81 * std::pow(s.length, 3));
-  SupportSpec a, b;
-  a.position = Vec3(0, 0, 0.5);
-  a.tangent = lay.t0;
-  a.normal = lay.t0.unitOrthogonal();
-  b.s = s.length;
-  const double d = lay.span * s.length;
-  b.position =
-      a.position + Vec3(d * std::cos(lay.yaw), d * std::sin(lay.yaw), -lay.drop * s.length);
-  b.tangent = lay.t1;
-  b.normal = lay.t1.unitOrthogonal();
-  s.supports = {a, b};
-  // The far clamp is set as on a bench, within ~10 deg of the cable's
-  // torque-free twist (the far clamp released about its axis), like the public
-  // recordings.
-  RodSpec released = s;
-  released.supports[1].kind = SupportKind::kClip;
-  RodSimulator sim;
-  const SimulationResult r = sim.Simulate(released);
-  if (r.converged) {
-    const Frame& f = r.solution.frames.back();
-    const Vec3 t = lay.t1.normalized();
-    const Vec3 d1 = Eigen::Quaterniond::FromTwoVectors(f.d3, t) * f.d1;
-    std::normal_distribution<double> twist(0.0, 0.17);
-    s.supports[1].normal = Eigen::AngleAxisd(twist(rng), t) * d1;
-  }
-  return s;
-}
-
-// A support's push of `magnitude` [N] at arc length `sc` of the nominal, normal to the cable there
-// (a support without friction), at `angle` [rad] about the cable from the direction against
-// gravity.
-Vec3 NormalPush(const RodSpec& nominal, double sc, double magnitude, double angle) {
-  RodSimulator sim;
-  const SimulationResult r = sim.Simulate(nominal);
-  const Polyline& c = r.solution.centerline;
-  Eigen::Index i = 1;
-  while (i + 1 < c.s.size() && c.s[i] < sc) ++i;
-  const Vec3 t = (c.points.col(i) - c.points.col(i - 1)).normalized();
-  Vec3 up = Vec3::UnitZ() - t.z() * t;
-  up = up.norm() > 0.1 ? Vec3(up.normalized()) : t.unitOrthogonal();
-  const Vec3 side = t.cross(up);
-  return magnitude * (std::cos(angle) * up + std::sin(angle) * side);
-}
+using testing::HideEffect;
+using testing::MakeNominal;
+using testing::NormalPush;
 
 struct Hidden {
   std::string effect;
@@ -100,50 +38,10 @@ struct Hidden {
 };
 
 // `clamp` >= 0 puts a clamp effect at that clamp (else either, at random).
-Hidden HideEffect(const std::string& effect, const RodSpec& nominal, bool subtle,
-                  std::mt19937& rng, int clamp = -1) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double f = subtle ? 0.5 : 1.0;
+Hidden Hide(const std::string& effect, const RodSpec& nominal, bool subtle, std::mt19937& rng,
+            int clamp = -1) {
   Hidden h{effect, nominal};
-  RodSpec& t = h.truth;
-  const double L = nominal.length;
-  if (effect == "intrinsic_curvature") {
-    const double w = (0.08 + 0.2 * u(rng)) * L, c = (0.25 + 0.5 * u(rng)) * L;
-    const double a = 2 * M_PI * u(rng), k = f * (2.0 + 2.0 * u(rng));
-    t.natural_curvature.push_back(
-        {c - w / 2, c + w / 2, 0.2 * w, Vec3(k * std::cos(a), k * std::sin(a), 0)});
-  } else if (effect == "clamp_orientation") {
-    SupportSpec& sp = t.supports[u(rng) < 0.5 ? 0 : 1];
-    const Frame fr = Frame::FromTangentNormal(sp.tangent, sp.normal);
-    const double a = 2 * M_PI * u(rng);
-    const Eigen::AngleAxisd rot(f * (0.08 + 0.12 * u(rng)),
-                                std::cos(a) * fr.d1 + std::sin(a) * fr.d2);
-    sp.tangent = rot * fr.d3;
-    sp.normal = rot * fr.d1;
-  } else if (effect == "weight_stiffness_ratio") {
-    const double r =
-        u(rng) < 0.5 ? 1.0 + f * (0.3 + 0.6 * u(rng)) : 1.0 / (1.0 + f * (0.3 + 0.6 * u(rng)));
-    t.material.linear_density *= r;
-  } else if (effect == "anisotropic_bending") {
-    t.material.bending_ratio = 1.0 + f * (0.5 + 0.8 * u(rng));
-    t.material.principal_angle = M_PI * u(rng);
-  } else if (effect == "support_contact") {
-    const double w = nominal.material.linear_density * 9.81 * L;
-    const double a = 2 * M_PI * u(rng), sc = (0.3 + 0.4 * u(rng)) * L;
-    t.point_loads.push_back({sc, NormalPush(nominal, sc, f * (0.034 + 0.056 * u(rng)) * w, a)});
-  } else if (effect == "clamp_compliance") {
-    const int k = u(rng) < 0.5 ? 0 : 1;
-    RodSimulator sim;
-    const SimulationResult r = sim.Simulate(nominal);
-    const double m = r.solution.reactions[k].moment.norm();
-    const double theta = f * (0.05 + 0.07 * u(rng));
-    t.supports[k].compliance = Mat3::Identity() * (theta / std::max(m, 1e-6));
-  } else if (effect == "twist_preload") {
-    const bool either = u(rng) < 0.5;
-    SupportSpec& sp = t.supports[clamp >= 0 ? clamp : (either ? 0 : 1)];
-    const double a = (u(rng) < 0.5 ? -1.0 : 1.0) * f * (0.5 + 0.6 * u(rng));
-    sp.normal = Eigen::AngleAxisd(a, sp.tangent.normalized()) * sp.normal;
-  }
+  HideEffect(effect, nominal, subtle, rng, &h.truth, {clamp, -1.0});
   return h;
 }
 
@@ -163,51 +61,26 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
                     const RodSpec& told, std::optional<int> truth_clamp, std::mt19937& rng,
                     bool run) {
   CaseOutcome out;
-  RodSimulator sim;
-  SimulationResult truth;
-  try {
-    truth = sim.Simulate(h.truth);
-  } catch (const std::exception& e) {
-    return out;
-  }
-  if (!truth.converged) {
+  const testing::ScannedTruth scanned = testing::ScanTruth(h.truth, told, rng, run);
+  if (!scanned.solved) {
     // The hidden truth itself could not be solved from the default shape: not a diagnosis
     // result, but reported so a regression in the solver shows.
     std::printf("%-7s %-24s truth solve failed: %s\n", layout, label.c_str(),
-                truth.solution.summary.BriefReport().c_str());
+                scanned.failure.c_str());
     return out;
   }
-  const double L = h.truth.length;
-  const Polyline curve = SampleCenterline(truth.solution.centerline, UniformArcLengths(L, 4000));
-  testing::SyntheticScanSpec ss;
-  ss.diameter = h.truth.material.diameter;
-  ss.coverage_deg = 140 + 120 * (rng() % 1000) / 1000.0;
-  ss.noise_sigma = 0.05e-3 + 0.1e-3 * (rng() % 1000) / 1000.0;
-  ss.points = (rng() % 2) ? 8000 : 15000;  // sparse and dense scans
-  const double g0 = (0.2 + 0.5 * (rng() % 1000) / 1000.0) * L;
-  ss.gaps = {Eigen::Vector2d(g0, g0 + 0.04)};
-  ss.seed = static_cast<unsigned>(rng());
   if (!run) {
     out.got = "skipped";
     return out;
   }
-  const testing::SyntheticScan scan = testing::MakeSyntheticScan(curve, ss);
-  ScanCenterlineOptions so;
-  so.diameter = h.truth.material.diameter;
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    // The scan is traced along the set-up it was taken on when the diagnosis is told too few
-    // clamps to guide it (as a measured centreline would need no guide).
-    const ScanCenterline sc = ExtractScanCenterline(
-        scan.cloud, so, ScanGuide::FromRodSpec(told.supports.size() > 1 ? told : h.truth));
-    ShapeObservation obs;
-    obs.points = sc.points;
-    obs.s = sc.s;
-    obs.noise_sigma = std::max(1e-5, sc.noise_sigma / 10.0);
+    const ShapeObservation& obs = scanned.observation;
     ShapeDiagnosisOptions options;  // as `cablefit diagnose` of one case: fits on every core
     options.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const ShapeDiagnosis dg = DiagnoseShape(told, obs, options);
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.seconds = scanned.extraction_seconds +
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.got = dg.explained ? ToString(dg.effect) : "unexplained";
     out.improvement = dg.baseline_max / std::max(dg.fitted_max, 1e-12);
     if (truth_clamp && out.got == label) {
@@ -217,12 +90,12 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
         out.clamp_right = out.clamp_ambiguous = true;
     }
     std::printf("%-7s %-24s %-7s -> %-24s conf %.2f  base %.2f mm fit %.3f mm (x%.1f) "
-                "chi2/limit %.2f%s  %.1f s\n",
+                "chi2/limit %.2f%s  %.1f s single %.2f%s\n",
                 layout, label.c_str(), subtle ? "subtle" : "", out.got.c_str(), dg.confidence,
                 dg.baseline_max * 1e3, dg.fitted_max * 1e3, out.improvement,
                 dg.adequacy.chi_square / dg.adequacy.limit,
                 out.clamp_ambiguous ? " clamp: the alternative" : out.clamp_right ? "" : " WRONG CLAMP",
-                out.seconds);
+                out.seconds, dg.adequacy.single_residual, dg.effects.size() > 1 ? " PAIR" : "");
     for (const DiagnosisNote& note : dg.notes) {
       const char* what = note.kind == DiagnosisNote::Kind::kRecordingReversed ? "reversed"
                          : note.kind == DiagnosisNote::Kind::kFitDidNotHold
@@ -242,12 +115,7 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
 }
 
 TEST(ConcealedCorpusTest, ConfusionMatrix) {
-  const std::vector<Layout> layouts = {
-      {"sag", 0.75, 0.0, 0.0, Vec3(1, 0, 0), Vec3(1, 0, 0)},
-      {"bend3d", 0.6, 0.15, 0.6, Vec3(1, 0.3, 0.1), Vec3(0.2, 1, -0.2)},
-      {"drop", 0.5, 0.5, 0.2, Vec3(1, 0, 0), Vec3(0.3, 0, -1)},
-      {"loop", 0.3, 0.05, 0.0, Vec3(1, 0, 0.3), Vec3(-1, 0, 0.3)},
-  };
+  const std::vector<testing::Layout> layouts = testing::CorpusLayouts();
   const std::vector<std::string> effects = {"none",
                                             "intrinsic_curvature",
                                             "clamp_orientation",
@@ -283,7 +151,7 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
     for (size_t ei = 0; ei + 1 < effects.size(); ++ei) {
       const bool subtle = (li + ei) % 3 == 0;
       const RodSpec nominal = MakeNominal(layouts[li], rng);
-      const Hidden h = HideEffect(effects[ei], nominal, subtle, rng);
+      const Hidden h = Hide(effects[ei], nominal, subtle, rng);
       std::optional<int> clamp;
       for (size_t k = 0; k < nominal.supports.size(); ++k)
         if (!(h.truth.supports[k].normal - nominal.supports[k].normal).isZero(0) ||
@@ -299,7 +167,7 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
     {
       const bool subtle = li % 2 == 1;
       const RodSpec nominal = MakeNominal(layouts[li], rng);
-      const Hidden h = HideEffect("twist_preload", nominal, subtle, rng, 0);
+      const Hidden h = Hide("twist_preload", nominal, subtle, rng, 0);
       const bool run = !testing::SanitizerBuild() || li == 0;
       tally("twist_preload",
             RunCase(layouts[li].name, "twist_preload", subtle, h, nominal, 0, rng, run));
@@ -310,7 +178,7 @@ TEST(ConcealedCorpusTest, ConfusionMatrix) {
     {
       std::uniform_real_distribution<double> u(0.0, 1.0);
       const RodSpec nominal = MakeNominal(layouts[li], rng);
-      Hidden h = HideEffect("anisotropic_bending", nominal, false, rng);
+      Hidden h = Hide("anisotropic_bending", nominal, false, rng);
       h.truth.material.bending_ratio = 1.9 + 0.5 * u(rng);
       h.truth.material.principal_angle = M_PI * u(rng);
       const bool run = !testing::SanitizerBuild() || li == 0;

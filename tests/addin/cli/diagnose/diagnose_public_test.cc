@@ -63,6 +63,33 @@ void CheckDiagnosisJson(const json::Json& j, const RecordingCase& rc) {
   for (const auto& [name, value] : j.at("parameters").items()) {
     EXPECT_TRUE(value.is_number() || (value.is_array() && value.size() == 3)) << name;
   }
+  // Every effect found, dominant first: none is an empty list, otherwise the first entry is the
+  // top-level effect with its clamp, interval and parameters, and the shares are parts of the
+  // baseline mismatch.
+  const json::Json& effects = j.at("effects");
+  ASSERT_TRUE(effects.is_array());
+  if (j.at("effect") == "none") {
+    EXPECT_TRUE(effects.empty());
+  } else {
+    ASSERT_GE(effects.size(), 1u);
+    EXPECT_LE(effects.size(), 2u);
+    EXPECT_EQ(effects[0].at("effect"), j.at("effect"));
+    EXPECT_EQ(effects[0].at("clamp"), j.at("clamp"));
+    EXPECT_EQ(effects[0].at("interval"), j.at("interval"));
+    EXPECT_EQ(effects[0].at("parameters"), j.at("parameters"));
+    double total = 0.0;
+    for (const json::Json& e : effects) {
+      EXPECT_TRUE(kCatalogue.count(e.at("effect").get<std::string>())) << e.at("effect");
+      ASSERT_TRUE(e.at("share").is_number());
+      total += e.at("share").get<double>();
+    }
+    if (j.at("explained").get<bool>()) {
+      EXPECT_GT(total, 0.0);
+      EXPECT_LE(total, 1.0 + 1e-9);
+    }
+    for (size_t k = 1; k < effects.size(); ++k)
+      EXPECT_GE(effects[k - 1].at("share").get<double>(), effects[k].at("share").get<double>());
+  }
   // Provenance: the case file and every recording, each with the SHA-256 of its bytes.
   const json::Json& inputs = j.at("provenance").at("inputs");
   ASSERT_EQ(inputs.size(), rc.recordings.size() + 1);

@@ -33,6 +33,16 @@ struct DiagnosedCurve {
   ForceDiagnosis diagnosis;  // re-expressed with the case-level effect
 };
 
+/// One piece of physics found (diagnosis.json's `effects`).
+struct FoundEffectSummary {
+  std::string effect;
+  std::optional<int> clamp;
+  std::optional<std::pair<double, double>> interval;  // [m]
+  std::map<std::string, double> parameters;
+  std::map<std::string, Vec3> vectors;
+  double share = 0.0;  // part of the baseline mismatch (sum of squares) it removes [-]
+};
+
 enum class CaseKind { kShape, kForce };
 const char* ToString(CaseKind kind);
 
@@ -51,6 +61,8 @@ struct DiagnosedCase {
   std::string deviation_unit = "m";  // "m", or the force curve's "N" / "N m"
   std::string explanation;
   std::vector<std::pair<std::string, double>> candidates;  // (effect, score), best first
+  /// Every effect found, dominant first (the first is `effect`'s); empty for none.
+  std::vector<FoundEffectSummary> effects;
   bool explained = true;  // false: nothing in the catalogue fits the recording within its noise
 
   // ---- shape cases ----
@@ -68,6 +80,9 @@ struct DiagnosedCase {
 
   double seconds = 0.0;
 };
+
+/// The effects found as people read them: "none", one name, or "a + b" (dominant first).
+std::string EffectsName(const DiagnosedCase& d);
 
 struct DiagnoseCaseOptions {
   ShapeDiagnosisOptions shape;

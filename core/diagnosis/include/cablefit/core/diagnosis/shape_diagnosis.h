@@ -1,8 +1,9 @@
 // Diagnosis of a recorded cable shape: simulate the nominal set-up from the recorded shape,
 // measure where recording and simulation differ (only where the cable was seen), fit every
 // effect of the catalogue (recording-v1.md) as a parametrised change of the nominal model by
-// Levenberg-Marquardt with warm-started forward solves and multi-start, and choose with the
-// Bayesian information criterion using the estimated noise.
+// Levenberg-Marquardt with warm-started forward solves and multi-start, search pairs of effects
+// when no single one is enough, and choose with the Bayesian information criterion using the
+// estimated noise.
 #pragma once
 
 #include <map>
@@ -44,6 +45,12 @@ struct ShapeDiagnosisOptions {
   /// leave 1.0-2.0 times the estimate on the public scans and the concealed corpus; a set-up that
   /// does not match leaves hundreds.
   double noise_allowance = 3.0;
+  /// Pairs of effects are searched (effect_pair_search) when the best single model leaves more
+  /// than this many times the recording's noise estimate (chi-square test as for `explained`);
+  /// 0 = never. Measured on the concealed corpus: the right single model leaves 0.6-1.9 times
+  /// the estimate (see noise_allowance), two effects fitted by one leave far more; below the
+  /// allowance a second effect has nothing left to explain that the noise estimate could tell.
+  double pair_search_allowance = 2.0;
   /// The starts of every fit run on this many threads (each start is independent and
   /// deterministic: the result does not depend on it). Cancellation and the time limit of the
   /// calling thread's scope apply to them all.
@@ -71,6 +78,35 @@ struct EffectCandidate {
   bool converged = false;  // the fit stopped on a minimum (not on its iteration limit)
 };
 
+/// A pair of effects as the selection saw it (their joint fit).
+struct CombinationCandidate {
+  std::vector<ShapeEffect> effects;       // in the order they were added
+  std::vector<std::optional<int>> clamps;  // per effect
+  double score = 0.0;  // posterior weight in [0, 1], among every model (single and pairs)
+  double bic = 0.0;
+  int parameter_count = 0;
+  double max_deviation = 0.0;  // [m] as EffectCandidate's
+  double rms_deviation = 0.0;  // [m]
+  bool converged = false;
+};
+
+/// One piece of physics the diagnosis found, where it acts and how much of the mismatch it
+/// explains (diagnosis.json's `effects`).
+struct FoundEffect {
+  ShapeEffect effect = ShapeEffect::kNone;
+  std::optional<int> clamp;
+  /// [m] where the effect acts: its own span (curvature, contact), or where the fitted shape
+  /// changes most when the effect is left out of the fit.
+  std::optional<std::pair<double, double>> interval;
+  std::map<std::string, double> parameters;
+  std::map<std::string, Vec3> vectors;
+  std::map<std::string, std::string> units;
+  /// The part of the baseline mismatch (sum of squared offsets) the effect removes in the joint
+  /// fit [-]: its gain averaged over both orders of adding the effects (the Shapley value), so
+  /// the shares add up to the part the whole fit removes.
+  double share = 0.0;
+};
+
 /// Whether the best fit explains the recording: its residual against the recording's own noise.
 struct ShapeAdequacy {
   ShapeEffect best_effect = ShapeEffect::kNone;  // the model with the smallest residual
@@ -80,6 +116,10 @@ struct ShapeAdequacy {
   double limit = 0.0;          // 99.9 % quantile of chi-square at those degrees of freedom
   double noise_sigma = 0.0;    // [m] the recording's centre-point noise
   double noise_allowance = 1.0;  // ShapeDiagnosisOptions::noise_allowance
+  /// The best single model's residual (rms offset per component) over noise_sigma [-], and
+  /// whether pairs of effects were searched because of it (pair_search_allowance).
+  double single_residual = 0.0;
+  bool pairs_searched = false;
 };
 
 /// How the nominal set-up was solved for the fits: the equilibrium each fit can start from.
@@ -115,6 +155,7 @@ struct ShapeDiagnosisCost {
   double recording_seconds = 0.0;  // checks, reversal, thinning
   double nominal_seconds = 0.0;    // the nominal's equilibria for the fits
   double fits_seconds = 0.0;       // every model of the catalogue fitted
+  double pairs_seconds = 0.0;      // the search for a pair of effects (0 when not needed)
   double final_seconds = 0.0;      // nominal and chosen model at full accuracy, deviations
   int forward_solves = 0;          // the fits' re-solves (each one a warm Newton solve)
   int lm_iterations = 0;           // the fits' Levenberg-Marquardt iterations, all starts
@@ -122,7 +163,11 @@ struct ShapeDiagnosisCost {
 
 /// The diagnosis as data; the report layer words it for a person.
 struct ShapeDiagnosis {
+  /// The dominant effect of `effects` (kNone when it is empty); clamp, interval, parameters,
+  /// vectors and units below are its.
   ShapeEffect effect = ShapeEffect::kNone;
+  /// Every effect found, dominant (largest share) first; empty for none.
+  std::vector<FoundEffect> effects;
   double confidence = 0.0;
   /// False when no catalogue effect (nor none) fits within the noise: then `effect` is only the
   /// best candidate and `confidence` is low.
@@ -137,7 +182,8 @@ struct ShapeDiagnosis {
   std::map<std::string, std::string> units;
   double baseline_max = 0.0, baseline_rms = 0.0;  // [m] nominal vs observation (seen points)
   double fitted_max = 0.0, fitted_rms = 0.0;      // [m] fitted vs observation
-  std::vector<EffectCandidate> candidates;        // best first
+  std::vector<EffectCandidate> candidates;        // single effects, best first
+  std::vector<CombinationCandidate> combinations;  // pairs weighed, best first
   RodSpec fitted_spec;
   RodSolution nominal_solution;   // extrapolated centreline (nodes), reactions ...
   RodSolution fitted_solution;

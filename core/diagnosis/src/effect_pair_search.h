@@ -1,0 +1,41 @@
+// Which pair of effects explains a recording that no single effect does. Every pair the
+// catalogue allows is screened by a few Levenberg-Marquardt iterations of the joint fit, started
+// from the two single fits (each has absorbed some of the other cause, but they lie in the right
+// basin) and from one single fit with the other effect at its neutral start (what a forward
+// selection step would start from); the most promising pairs are then fitted to their optimum.
+// A forward selection from the best single fit alone misses a pair whose causes that fit has
+// mixed up, and its fits over every start of the added effect cost more than screening all pairs.
+// The selection (model_selection) then weighs the pairs against the single effects: a pair must
+// win its place by the information criterion (each effect paying the same margin), and its fit
+// must hold in the accurate solve, so one cause stays one effect.
+#pragma once
+
+#include <vector>
+
+#include "cablefit/core/rod/rod_spec.h"
+#include "effect_fit.h"
+#include "shape_effects.h"
+
+namespace cablefit {
+
+struct PairSearchOptions {
+  int max_iterations = 30;    // Levenberg-Marquardt iterations of a pair carried to its optimum
+  int screen_iterations = 6;  // ... of every pair's screening
+  int refits = 4;             // how many of the best screened pairs are carried to the optimum
+  int threads = 1;            // the pairs run in parallel (same result on any count)
+};
+
+struct PairSearch {
+  std::vector<EffectModel> models;  // combinations (parts index the single models)
+  std::vector<Fit> fits;            // one per model
+  int forward_solves = 0;
+  int lm_iterations = 0;
+};
+
+/// The pairs worth weighing, each fitted jointly to its optimum. `singles` and `single_fits` are the single
+/// effects and their fits (`none` among them); `bases` the nominal's equilibria they started from.
+PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                             const RodSpec& nominal, const std::vector<EffectModel>& singles,
+                             const std::vector<Fit>& single_fits, const PairSearchOptions& options);
+
+}  // namespace cablefit
