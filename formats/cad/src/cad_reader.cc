@@ -31,6 +31,7 @@
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
 #include "cad_read_in_process.h"
+#include "breakout_branches.h"
 #include "core_tails.h"
 #include "crash_probe.h"
 #include "curve_pieces.h"
@@ -265,6 +266,7 @@ class DrawingBuilder {
         record.centres = tube->centres * kMetresPerOcctUnit;
         record.radius = tube->radius * kMetresPerOcctUnit;
         record.inner_radius = tube->inner_radius * kMetresPerOcctUnit;
+        record.fit_error = tube->rms_residual * kMetresPerOcctUnit;
         const double length = ChainLength(tube->centres);
         const double slenderness = length / (2 * tube->radius);
         if (slenderness < options_.min_tube_aspect) {
@@ -556,8 +558,9 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
     AbsorbedTubes absorbed(drawing);
     MergeSweepsIntoCurves(tubes, &drawing, &absorbed);
     MergeCoresIntoFlatJackets(tubes, &drawing, &absorbed);
-    MergeCoreTails(tubes, options.min_tube_aspect, &drawing, &absorbed);
+    MergeCoreTails(tubes, options.min_tube_aspect, options.junction_tolerance, &drawing, &absorbed);
     DemoteStubs(options, &absorbed, &drawing);
+    KeepBreakoutBranches(tubes, options.junction_tolerance, &absorbed, &drawing);
     absorbed.RemoveFrom(&drawing);
   } catch (const Standard_Failure& e) {
     throw FileError(path, std::string("OCCT could not read the file: ") + e.GetMessageString());

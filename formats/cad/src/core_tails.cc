@@ -60,6 +60,18 @@ const std::string& NameOf(const DrawnTube& tube, const HarnessDrawing& drawing) 
                        : drawing.solids[static_cast<size_t>(tube.index)].name;
 }
 
+// How many cables other than `tube` itself have an end within `tolerance` of `p`.
+int CableEndsAt(const std::vector<DrawnCable>& cables, const Vec3& p, double tolerance,
+                const DrawnTube& tube) {
+  int count = 0;
+  for (size_t c = 0; c < cables.size(); ++c) {
+    const Eigen::Matrix3Xd& q = cables[c].centreline.points;
+    if (q.cols() < 2 || (tube.is_cable && static_cast<size_t>(tube.index) == c)) continue;
+    count += (q.col(0) - p).norm() <= tolerance || (q.col(q.cols() - 1) - p).norm() <= tolerance;
+  }
+  return count;
+}
+
 double ChainLength(const Eigen::Matrix3Xd& points) {
   double length = 0;
   for (Eigen::Index i = 1; i < points.cols(); ++i) length += (points.col(i) - points.col(i - 1)).norm();
@@ -121,7 +133,7 @@ std::string TailLine(const DrawnTube& tube, const std::string& name, const std::
 }  // namespace
 
 void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
-                    HarnessDrawing* drawing, AbsorbedTubes* absorbed) {
+                    double junction_tolerance, HarnessDrawing* drawing, AbsorbedTubes* absorbed) {
   const std::vector<DrawnCable>& cables = drawing->cables;
   // Candidates: the recovered tubes (cables or parts), then the cables that are no tube solid
   // (a core's route curve with its sweeps merged into it, or a bare curve).
@@ -162,7 +174,8 @@ void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
           // It runs out of the cable: its far end is clear of the end face by its diameter (a
           // tail may bend sideways right after the jacket).
           tail = tail || (InEndSection(cable, end, root, tube.radius) &&
-                          (tip - end.point).dot(end.out) > std::max(2 * tube.radius, 0.1 * length));
+                          (tip - end.point).dot(end.out) > std::max(2 * tube.radius, 0.1 * length) &&
+                          CableEndsAt(cables, root, junction_tolerance, tube) < 2);
         }
       }
       if (!tail) continue;

@@ -13,7 +13,9 @@ namespace cablefit::internal {
 /// `tubes`) that is thinner than a cable, starts inside that cable's section at one of its ends
 /// and runs out of it, and is shorter than `min_aspect` of that cable's diameters (a branch of a
 /// harness is longer), is marked in `absorbed` as part of the cable, with a line in `skipped`.
+/// A tube whose root meets the ends of two other cables (within `junction_tolerance` [m]) is a
+/// branch of their breakout (a thin wire leaving a harness node), not a core end.
 void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
-                    HarnessDrawing* drawing, AbsorbedTubes* absorbed);
+                    double junction_tolerance, HarnessDrawing* drawing, AbsorbedTubes* absorbed);
 
 }  // namespace cablefit::internal

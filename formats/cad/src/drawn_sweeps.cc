@@ -182,7 +182,15 @@ void AbsorbedTubes::ReleaseSolidsOf(int owner) {
     if (solid_owner_[k] == owner && owner >= 0) solid_[k] = 0;
 }
 
+void AbsorbedTubes::Drop(const DrawnTube& tube, HarnessDrawing* drawing) {
+  if (tube.skipped_note >= 0 && tube.skipped_note < static_cast<int>(drawing->skipped.size()))
+    drawing->skipped[static_cast<size_t>(tube.skipped_note)].clear();
+  (tube.is_cable ? cable_ : solid_)[static_cast<size_t>(tube.index)] = 1;
+}
+
 void AbsorbedTubes::RemoveFrom(HarnessDrawing* drawing) const {
+  drawing->skipped.erase(std::remove(drawing->skipped.begin(), drawing->skipped.end(), std::string()),
+                         drawing->skipped.end());
   std::vector<DrawnCable> cables;
   for (size_t c = 0; c < drawing->cables.size(); ++c)
     if (c >= cable_.size() || !cable_[c]) cables.push_back(std::move(drawing->cables[c]));

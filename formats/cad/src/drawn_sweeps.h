@@ -17,6 +17,7 @@ struct DrawnTube {
   Eigen::Matrix3Xd centres;  ///< 3 x n [m], along the tube
   double radius = 0.0;       ///< [m] outer
   double inner_radius = 0.0; ///< [m] bore, 0 for a solid tube
+  double fit_error = 0.0;    ///< [m] RMS residual of the cross-section circle fits
 };
 
 /// Tubes found to be part of another cable (a sweep around its route, a core in its flat
@@ -29,6 +30,7 @@ class AbsorbedTubes {
         solid_(drawing.solids.size(), 0),
         solid_owner_(drawing.solids.size(), -1) {}
   bool CableMarked(size_t cable) const { return cable_[cable] != 0; }
+  size_t CableCount() const { return cable_.size(); }
   bool Marked(const DrawnTube& tube) const {
     const std::vector<char>& marks = tube.is_cable ? cable_ : solid_;
     const size_t index = static_cast<size_t>(tube.index);
@@ -41,6 +43,9 @@ class AbsorbedTubes {
   /// Solid parts marked as part of cable `owner` stay in the drawing after all (that cable
   /// turned out to be no cable).
   void ReleaseSolidsOf(int owner);
+  /// The solid part leaves the drawing without a line (it was taken as a cable after all); its
+  /// own skipped line is emptied (RemoveFrom drops empty lines).
+  void Drop(const DrawnTube& tube, HarnessDrawing* drawing);
   void RemoveFrom(HarnessDrawing* drawing) const;
 
  private:

@@ -70,7 +70,7 @@ TEST(CoreTails, TailsOutOfAJacketEndBelongToItsCable) {
     tubes.push_back(t);
   }
   AbsorbedTubes absorbed(d);
-  internal::MergeCoreTails(tubes, 10.0, &d, &absorbed);
+  internal::MergeCoreTails(tubes, 10.0, 1e-4, &d, &absorbed);
   absorbed.RemoveFrom(&d);
   EXPECT_EQ(Names(d), (std::vector<std::string>{"jacket", "next"}));
   ASSERT_EQ(d.skipped.size(), 3u);
@@ -88,23 +88,27 @@ TEST(CoreTails, BareCurveTailsSideBySideGoButBreakoutBranchesStay) {
   d.cables.push_back(Cable("branch", Line({0.12, 0, 0}, {0.16, 0.01, 0}), 0.0));
   d.cables.push_back(Cable("branch", Line({0.12, 0, 0}, {0.16, -0.01, 0}), 0.0));
   AbsorbedTubes absorbed(d);
-  internal::MergeCoreTails({}, 10.0, &d, &absorbed);
+  internal::MergeCoreTails({}, 10.0, 1e-4, &d, &absorbed);
   absorbed.RemoveFrom(&d);
   EXPECT_EQ(Names(d), (std::vector<std::string>{"route", "branch", "branch"}));
   EXPECT_EQ(d.skipped.size(), 3u);
 }
 
-TEST(CoreTails, ALongBranchOrAThickNeighbourIsNoTail) {
+TEST(CoreTails, ALongBranchANodesBranchOrAThickNeighbourIsNoTail) {
   HarnessDrawing d;
   // A 9 mm cable; a 3 mm cable leaving its end face but 0.2 m long (over 10 diameters of the
   // cable: a branch), and a 12 mm tube at its end (thicker than the cable).
+  // At the other end a 1.6 mm wire of 40 mm leaves the node where the cable meets a 6 mm one:
+  // a thin branch of a harness node, not a core end.
   d.cables = {Cable("jacket", Line({0, 0, 0}, {0.3, 0, 0}), 0.009),
-              Cable("branch", Line({0, 0.002, 0}, {-0.2, 0.002, 0}), 0.003)};
+              Cable("branch", Line({0, 0.002, 0}, {-0.2, 0.002, 0}), 0.003),
+              Cable("onward", Line({0.3, 0, 0}, {0.3, 0.1, 0}), 0.006),
+              Cable("wire", Line({0.3, 0, 0}, {0.34, 0, 0}), 0.0016)};
   std::vector<DrawnTube> tubes = {SolidTube(&d, "boot", Line({0, 0, 0}, {-0.02, 0, 0}), 0.006)};
   AbsorbedTubes absorbed(d);
-  internal::MergeCoreTails(tubes, 10.0, &d, &absorbed);
+  internal::MergeCoreTails(tubes, 10.0, 1e-4, &d, &absorbed);
   absorbed.RemoveFrom(&d);
-  EXPECT_EQ(Names(d), (std::vector<std::string>{"jacket", "branch", "solid boot"}));
+  EXPECT_EQ(Names(d), (std::vector<std::string>{"jacket", "branch", "onward", "wire", "solid boot"}));
   EXPECT_TRUE(d.skipped.empty());
 }
 
