@@ -400,11 +400,83 @@ std::optional<MeshTube> HollowTube(const TriangleMesh& mesh, int component) {
   return std::move(outer);
 }
 
+// Whether every point of `inner`'s centreline lies within a quarter of `outer`'s radius of
+// `outer`'s centreline (plus its sampling chord): the two run along one axis.
+bool Coaxial(const MeshTube& inner, const MeshTube& outer) {
+  const double chord = outer.centreline.ChordLength() / std::max(1, outer.centreline.size());
+  for (int i = 0; i < inner.centreline.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < outer.centreline.size(); ++j)
+      nearest = std::min(nearest, (inner.centreline.points.col(i) - outer.centreline.points.col(j)).norm());
+    if (nearest > 0.25 * 0.5 * outer.diameter + chord) return false;
+  }
+  return true;
+}
+
+// A cable drawn as concentric closed surfaces (a coax: conductor, dielectric, jacket, each a
+// shell of its own) is one cable of the outer diameter: each tube lying along the axis of a
+// wider one of another component, within it, is that tube's layer. Its bore, if it has one,
+// is filled by the layer that fits it.
+void MergeConcentricLayers(std::vector<MeshTube>* tubes) {
+  std::vector<size_t> order(tubes->size());
+  std::iota(order.begin(), order.end(), 0);
+  // Widest first, so that every layer goes to the outermost tube around it.
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return (*tubes)[a].diameter > (*tubes)[b].diameter; });
+  std::vector<char> absorbed(tubes->size(), 0);
+  for (size_t oi = 0; oi < order.size(); ++oi) {
+    MeshTube& outer = (*tubes)[order[oi]];
+    if (absorbed[order[oi]]) continue;
+    for (size_t ii = oi + 1; ii < order.size(); ++ii) {
+      const MeshTube& inner = (*tubes)[order[ii]];
+      if (absorbed[order[ii]] || inner.component == outer.component ||
+          !(inner.diameter < 0.98 * outer.diameter) || !Coaxial(inner, outer))
+        continue;
+      absorbed[order[ii]] = 1;
+      outer.layers.push_back(inner.diameter);
+      outer.layer_components.push_back(inner.component);
+      for (size_t k = 0; k < inner.layers.size(); ++k) {
+        outer.layers.push_back(inner.layers[k]);
+        outer.layer_components.push_back(inner.layer_components[k]);
+      }
+      if (outer.inner_diameter > 0 && inner.diameter >= 0.9 * outer.inner_diameter)
+        outer.inner_diameter = 0;  // the bore is filled
+    }
+  }
+  std::vector<MeshTube> kept;
+  for (size_t k = 0; k < tubes->size(); ++k)
+    if (!absorbed[k]) kept.push_back(std::move((*tubes)[k]));
+  *tubes = std::move(kept);
+}
+
 }  // namespace
+
+// Solids exported together that touch along a surface (a coax's conductor, dielectric and
+// jacket as three solids, each meshed on its own) leave that surface twice, once facing each
+// way; welded, its edges have four faces and nothing is a closed surface. The doubled faces are
+// the inside of one body: without them the layers are the one closed surface around them all.
+TriangleMesh WithoutDoubledFaces(const TriangleMesh& mesh) {
+  std::map<std::array<int, 3>, int> count;
+  const auto key = [&](Eigen::Index f) {
+    std::array<int, 3> k = {mesh.faces(0, f), mesh.faces(1, f), mesh.faces(2, f)};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) ++count[key(f)];
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f)
+    if (count[key(f)] % 2 == 1) kept.push_back(f);
+  if (kept.size() == static_cast<size_t>(mesh.faces.cols())) return mesh;
+  TriangleMesh out;
+  out.vertices = mesh.vertices;
+  out.faces.resize(3, static_cast<Eigen::Index>(kept.size()));
+  for (size_t i = 0; i < kept.size(); ++i) out.faces.col(static_cast<Eigen::Index>(i)) = mesh.faces.col(kept[i]);
+  return out;
+}
 
 MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
   MeshContents out;
-  const std::vector<TriangleMesh> components = ConnectedComponents(mesh);
+  const std::vector<TriangleMesh> components = ConnectedComponents(WithoutDoubledFaces(mesh));
   for (size_t c = 0; c < components.size(); ++c) {
     const int component = static_cast<int>(c);
     try {
@@ -431,6 +503,7 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
       }
     }
   }
+  MergeConcentricLayers(&out.tubes);
   return out;
 }
 
