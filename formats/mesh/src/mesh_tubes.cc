@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/internal/tube_slices.h"
 #include "cablefit/formats/mesh_file.h"
 #include "hollow_tubes.h"
 #include "mcf_skeleton.h"
@@ -309,11 +310,13 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
       const std::vector<Vec3> tangents = Tangents(stations, step, 2 * r0);
       std::vector<Vec3> refined;
       std::vector<Section> sections;
+      std::vector<char> circular;
       for (size_t i = 0; i < stations.size(); ++i) {
         const Section s = CrossSection(mesh, grid, stations[i], tangents[i], 2 * r0);
         if (s.ok) sections.push_back(s);
         // Near a branch point the cut is no circle: keep the skeleton's point there.
         refined.push_back(s.ok ? s.centre : stations[i]);
+        circular.push_back(s.ok ? 1 : 0);
       }
       const double ok_fraction = static_cast<double>(sections.size()) / stations.size();
       if (ok_fraction < 0.6 || closed) {
@@ -327,7 +330,21 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
           radii.push_back(s.radius);
           residuals.push_back(s.residual * s.residual);
         }
-        const double radius = Median(radii);
+        double radius = Median(radii);
+        // The cuts go through the facets, inside the surface, and a coarse tessellation's facets
+        // wander about the axis: the vertices lie on the surface itself. Known-radius fits to
+        // the vertices in a slab about each centre (the scan tracer's slice fit) put the route
+        // on the axis, and their free radii give the tube's radius.
+        {
+          Eigen::Matrix3Xd centres(3, static_cast<Eigen::Index>(pts.size()));
+          for (size_t i = 0; i < pts.size(); ++i) centres.col(static_cast<Eigen::Index>(i)) = pts[i];
+          const internal::TubeSlices slices = internal::FitTubeSlices(mesh.vertices, radius, radius, &centres);
+          // Where the cut was no circle (a branch point, where the branches' routes meet at
+          // the skeleton's point) the route stays as it was.
+          for (size_t i = 0; i < pts.size(); ++i)
+            if (circular[i]) pts[i] = centres.col(static_cast<Eigen::Index>(i));
+          if (slices.radius > 0) radius = slices.radius;
+        }
         const int n = static_cast<int>(pts.size());
         // Carry free ends out to the caps, where the skeleton stops short.
         if (route.start_is_end) {

@@ -328,5 +328,21 @@ TEST(MeshFile, LayersExportedAsTouchingSolidsAreOneCable) {
   EXPECT_LT(MaxDistanceToPolyline(contents.tubes[0].centreline, SampleCurve(BentRoute, 4001)), 0.01 * 0.010);
 }
 
+// A coarse tessellation (12 sides): the cuts through its facets lie inside the surface (a 12-gon
+// averages 1.1 % inside its circle), its vertices on it. The slice fits on the vertices give
+// the diameter and keep the route on the axis.
+TEST(MeshFile, ACoarselyTessellatedTubeHasItsTrueDiameterFromItsVertices) {
+  const double diameter = 0.010;
+  const TriangleMesh tube = SweepTubeMesh(SampleCurve(BentRoute, 81), diameter, 12);
+  const auto path = (testing::FreshTempDir("mesh_coarse") / "tube.stl").string();
+  WriteMeshFile(path, tube, 0.001);
+  const std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
+  ASSERT_EQ(tubes.size(), 1u);
+  std::printf("12-sided tube: diameter %.5f mm (drawn 10), route max %.2e m off\n",
+              1e3 * tubes[0].diameter, MaxDistanceToPolyline(tubes[0].centreline, SampleCurve(BentRoute, 4001)));
+  EXPECT_NEAR(tubes[0].diameter, diameter, 1e-3 * diameter);
+  EXPECT_LT(MaxDistanceToPolyline(tubes[0].centreline, SampleCurve(BentRoute, 4001)), 0.01 * diameter);
+}
+
 }  // namespace
 }  // namespace cablefit
