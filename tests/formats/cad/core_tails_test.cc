@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cablefit/formats/cad_file.h"
+#include "curve_distance.h"
 
 namespace cablefit {
 namespace {
@@ -15,14 +16,7 @@ namespace {
 using internal::AbsorbedTubes;
 using internal::DrawnTube;
 
-// Points from a to b [m].
-Polyline Line(const Vec3& a, const Vec3& b, int n = 11) {
-  Polyline line;
-  line.points.resize(3, n);
-  for (int i = 0; i < n; ++i) line.points.col(i) = a + (b - a) * i / (n - 1.0);
-  line.ParameteriseByChords();
-  return line;
-}
+Polyline Line(const Vec3& a, const Vec3& b) { return testing::StraightLine(a, b); }
 
 DrawnCable Cable(const std::string& name, const Polyline& route, double diameter) {
   DrawnCable c;

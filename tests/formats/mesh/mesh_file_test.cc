@@ -252,6 +252,13 @@ TEST(MeshFile, RoutesDoNotDependOnWhatTheProcessDidBefore) {
 namespace cablefit {
 namespace {
 
+// `mesh` written as a millimetre STL and read back.
+MeshContents ReadBackAsStl(const TriangleMesh& mesh, const std::string& tag) {
+  const auto path = (testing::FreshTempDir(tag) / (tag + ".stl")).string();
+  WriteMeshFile(path, mesh, 0.001);
+  return ReadMeshContents(path, 0.001);
+}
+
 TriangleMesh Concatenated(const std::vector<TriangleMesh>& parts) {
   TriangleMesh m;
   Eigen::Index nv = 0, nf = 0;
@@ -278,9 +285,7 @@ TEST(MeshFile, ConcentricShellsAreOneCableOfTheOuterDiameterWithItsLayers) {
   const Polyline route = SampleCurve(BentRoute, 161);
   const TriangleMesh coax = Concatenated(
       {SweepTubeMesh(route, 0.0012, 32), SweepTubeMesh(route, 0.004, 32), SweepTubeMesh(route, 0.0052, 32)});
-  const auto path = (testing::FreshTempDir("mesh_coax") / "coax.stl").string();
-  WriteMeshFile(path, coax, 0.001);
-  const MeshContents contents = ReadMeshContents(path, 0.001);
+  const MeshContents contents = ReadBackAsStl(coax, "mesh_coax");
   EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
   ASSERT_EQ(contents.tubes.size(), 1u);
   const MeshTube& cable = contents.tubes[0];
@@ -300,9 +305,7 @@ TEST(MeshFile, ACoreInAHoseBoreIsALayerButATubeBesideItIsNot) {
   beside.points.row(2).array() += 0.02;
   const TriangleMesh m = Concatenated({HoseMesh(route, 0.010, 0.006, 32), SweepTubeMesh(route, 0.0058, 32),
                                        SweepTubeMesh(beside, 0.004, 32)});
-  const auto path = (testing::FreshTempDir("mesh_hose_core") / "hose.stl").string();
-  WriteMeshFile(path, m, 0.001);
-  const MeshContents contents = ReadMeshContents(path, 0.001);
+  const MeshContents contents = ReadBackAsStl(m, "mesh_hose_core");
   ASSERT_EQ(contents.tubes.size(), 2u);
   const MeshTube& hose = contents.tubes[0].diameter > contents.tubes[1].diameter ? contents.tubes[0]
                                                                                  : contents.tubes[1];
@@ -318,9 +321,7 @@ TEST(MeshFile, ACoreInAHoseBoreIsALayerButATubeBesideItIsNot) {
 TEST(MeshFile, LayersExportedAsTouchingSolidsAreOneCable) {
   const Polyline route = SampleCurve(BentRoute, 161);
   const TriangleMesh m = Concatenated({SweepTubeMesh(route, 0.006, 32), HoseMesh(route, 0.010, 0.006, 32)});
-  const auto path = (testing::FreshTempDir("mesh_touching_layers") / "layers.stl").string();
-  WriteMeshFile(path, m, 0.001);
-  const MeshContents contents = ReadMeshContents(path, 0.001);
+  const MeshContents contents = ReadBackAsStl(m, "mesh_touching_layers");
   EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
   ASSERT_EQ(contents.tubes.size(), 1u);
   EXPECT_NEAR(contents.tubes[0].diameter, 0.010, 0.01 * 0.010);
@@ -334,9 +335,7 @@ TEST(MeshFile, LayersExportedAsTouchingSolidsAreOneCable) {
 TEST(MeshFile, ACoarselyTessellatedTubeHasItsTrueDiameterFromItsVertices) {
   const double diameter = 0.010;
   const TriangleMesh tube = SweepTubeMesh(SampleCurve(BentRoute, 81), diameter, 12);
-  const auto path = (testing::FreshTempDir("mesh_coarse") / "tube.stl").string();
-  WriteMeshFile(path, tube, 0.001);
-  const std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
+  const std::vector<MeshTube> tubes = ReadBackAsStl(tube, "mesh_coarse").tubes;
   ASSERT_EQ(tubes.size(), 1u);
   std::printf("12-sided tube: diameter %.5f mm (drawn 10), route max %.2e m off\n",
               1e3 * tubes[0].diameter, MaxDistanceToPolyline(tubes[0].centreline, SampleCurve(BentRoute, 4001)));
