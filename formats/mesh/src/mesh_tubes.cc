@@ -417,6 +417,16 @@ std::optional<MeshTube> HollowTube(const TriangleMesh& mesh, int component) {
   return std::move(outer);
 }
 
+// The volume a closed surface bounds, negative when its faces point inwards (a bore drawn as a
+// closed surface of its own, facing the hollow it bounds).
+double SignedVolume(const TriangleMesh& mesh) {
+  double six_v = 0;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f)
+    six_v += mesh.vertices.col(mesh.faces(0, f))
+                 .dot(mesh.vertices.col(mesh.faces(1, f)).cross(mesh.vertices.col(mesh.faces(2, f))));
+  return six_v / 6;
+}
+
 // Whether every point of `inner`'s centreline lies within a quarter of `outer`'s radius of
 // `outer`'s centreline (plus its sampling chord): the two run along one axis.
 bool Coaxial(const MeshTube& inner, const MeshTube& outer) {
@@ -433,8 +443,8 @@ bool Coaxial(const MeshTube& inner, const MeshTube& outer) {
 // A cable drawn as concentric closed surfaces (a coax: conductor, dielectric, jacket, each a
 // shell of its own) is one cable of the outer diameter: each tube lying along the axis of a
 // wider one of another component, within it, is that tube's layer. Its bore, if it has one,
-// is filled by the layer that fits it.
-void MergeConcentricLayers(std::vector<MeshTube>* tubes) {
+// is filled by the layer that fits it; an inner surface facing inwards is its bore.
+void MergeConcentricLayers(std::vector<MeshTube>* tubes, const std::vector<char>& cavity) {
   std::vector<size_t> order(tubes->size());
   std::iota(order.begin(), order.end(), 0);
   // Widest first, so that every layer goes to the outermost tube around it.
@@ -450,6 +460,11 @@ void MergeConcentricLayers(std::vector<MeshTube>* tubes) {
           !(inner.diameter < 0.98 * outer.diameter) || !Coaxial(inner, outer))
         continue;
       absorbed[order[ii]] = 1;
+      // A surface facing inwards bounds the hollow: the bore of a hose drawn as two shells.
+      if (cavity[static_cast<size_t>(inner.component)]) {
+        if (outer.inner_diameter == 0) outer.inner_diameter = inner.diameter;
+        continue;
+      }
       outer.layers.push_back(inner.diameter);
       outer.layer_components.push_back(inner.component);
       for (size_t k = 0; k < inner.layers.size(); ++k) {
@@ -520,7 +535,9 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
       }
     }
   }
-  MergeConcentricLayers(&out.tubes);
+  std::vector<char> cavity(components.size());
+  for (size_t c = 0; c < components.size(); ++c) cavity[c] = SignedVolume(components[c]) < 0;
+  MergeConcentricLayers(&out.tubes, cavity);
   return out;
 }
 

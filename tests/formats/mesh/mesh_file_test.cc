@@ -343,5 +343,19 @@ TEST(MeshFile, ACoarselyTessellatedTubeHasItsTrueDiameterFromItsVertices) {
   EXPECT_LT(MaxDistanceToPolyline(tubes[0].centreline, SampleCurve(BentRoute, 4001)), 0.01 * diameter);
 }
 
+// A hose drawn as two closed shells, its bore's faces pointing into the hollow: one hollow
+// cable, the bore its inner diameter (not a layer).
+TEST(MeshFile, ABoreDrawnAsAnInwardShellIsTheHollowOfItsTube) {
+  const Polyline route = SampleCurve(BentRoute, 161);
+  TriangleMesh bore = SweepTubeMesh(route, 0.006, 32);
+  bore.faces.row(1).swap(bore.faces.row(2));
+  const MeshContents contents =
+      ReadBackAsStl(Concatenated({SweepTubeMesh(route, 0.010, 32), bore}), "mesh_bore_shell");
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  EXPECT_NEAR(contents.tubes[0].diameter, 0.010, 0.01 * 0.010);
+  EXPECT_NEAR(contents.tubes[0].inner_diameter, 0.006, 0.01 * 0.006);
+  EXPECT_TRUE(contents.tubes[0].layers.empty());
+}
+
 }  // namespace
 }  // namespace cablefit
