@@ -18,6 +18,11 @@ inline Polyline SampleCurve(const std::function<Vec3(double)>& f, int n) {
 }
 
 /// Largest distance [m] of any point of `a` from the polyline `b` (one-sided Hausdorff).
+/// The straight line from `a` to `b` [m] as `n` evenly spaced points.
+inline Polyline StraightLine(const Vec3& a, const Vec3& b, int n = 11) {
+  return SampleCurve([&](double u) -> Vec3 { return a + (b - a) * u; }, n);
+}
+
 inline double MaxDistanceToPolyline(const Polyline& a, const Polyline& b) {
   double worst = 0;
   for (int i = 0; i < a.size(); ++i) {

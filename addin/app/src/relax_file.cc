@@ -133,6 +133,15 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
     c.inner_diameter = tubes[k].inner_diameter;
     c.source = CableSourceKind::kMesh;
     c.fit_error = tubes[k].fit_error;
+    for (size_t l = 0; l < tubes[k].layers.size(); ++l) {
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "component %d: a %.4g mm layer inside cable '%s' (%.4g mm, on its axis): "
+                    "part of that cable, not a separate one",
+                    tubes[k].layer_components[l], 1e3 * tubes[k].layers[l], c.name.c_str(),
+                    1e3 * c.diameter);
+      d.skipped.push_back(line);
+    }
     min_diameter = std::min(min_diameter, c.diameter);
     d.cables.push_back(std::move(c));
   }

@@ -3,8 +3,11 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/errors.h"
@@ -40,6 +43,19 @@ std::string SectionSummaryText(const SectionResult& r, const std::string& input,
   return text;
 }
 
+// --out must name a new or existing file that is none of the run's inputs: SECTION.json and the
+// material library it names would otherwise be replaced by the result.
+void CheckSectionOut(const std::string& out, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(out, ec))
+    throw InvalidInput("--out " + out + ": is a folder; name a file");
+  for (const std::string& in : inputs) {
+    if (!in.empty() && std::filesystem::equivalent(in, out, ec) && !ec)
+      throw InvalidInput("--out " + out + ": is the input " + in +
+                         "; write the result to another file (inputs are never overwritten)");
+  }
+}
+
 }  // namespace
 
 void RegisterSectionCommand(CLI::App& app, int* exit_code) {
@@ -57,7 +73,9 @@ void RegisterSectionCommand(CLI::App& app, int* exit_code) {
   auto options = std::make_shared<Options>();
   cmd->add_option("SECTION", options->input, "SECTION.json (format cablefit-section/1)")
       ->required();
-  cmd->add_option("--out", options->out, "also write the result JSON to this file (atomically)");
+  CLI::Option* out_option = cmd->add_option(
+      "--out", options->out,
+      "also write the result JSON to this file (atomically; never one of the inputs)");
   cmd->add_option("--cells", options->cells,
                   "torsion: grid cells across the section on the finest grid (overrides file)");
   cmd->add_option("--levels", options->levels,
@@ -67,8 +85,12 @@ void RegisterSectionCommand(CLI::App& app, int* exit_code) {
                   "--out writes it), auto (text on a terminal, json when piped)")
       ->check(CLI::IsMember({"auto", "text", "json"}))
       ->capture_default_str();
-  cmd->callback([options, exit_code] {
+  cmd->callback([options, exit_code, out_option] {
+    if (out_option->count() > 0 && options->out.empty())
+      throw InvalidInput("--out: the output file name is empty");
+    if (!options->out.empty()) CheckSectionOut(options->out, {options->input});
     SectionInput input = ReadSectionFile(options->input);
+    if (!options->out.empty()) CheckSectionOut(options->out, {input.library});
     if (options->cells > 0) input.torsion.finest_cells = options->cells;
     if (options->levels > 0) input.torsion.levels = options->levels;
     std::string why;

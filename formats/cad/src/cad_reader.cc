@@ -31,6 +31,8 @@
 #include "cablefit/formats/cad_file.h"
 #include "cad_shape_handle.h"
 #include "cad_read_in_process.h"
+#include "breakout_branches.h"
+#include "core_tails.h"
 #include "crash_probe.h"
 #include "curve_pieces.h"
 #include "drawn_sweeps.h"
@@ -264,6 +266,7 @@ class DrawingBuilder {
         record.centres = tube->centres * kMetresPerOcctUnit;
         record.radius = tube->radius * kMetresPerOcctUnit;
         record.inner_radius = tube->inner_radius * kMetresPerOcctUnit;
+        record.fit_error = tube->rms_residual * kMetresPerOcctUnit;
         const double length = ChainLength(tube->centres);
         const double slenderness = length / (2 * tube->radius);
         if (slenderness < options_.min_tube_aspect) {
@@ -409,6 +412,44 @@ void DemoteDucts(HarnessDrawing* drawing, double relative_deflection) {
   cables = std::move(kept);
 }
 
+// A cable that its merges made stout (a conductor stub that took its insulation's diameter, a
+// short route curve inside a thick sheath) is no more a cable than a tube that was stout to begin
+// with: the rod model needs a slender piece, whichever way the cable was recognised (and the
+// relaxed STEP, read back, must give the same cables: there it is a tube). Its tube, or the solid
+// parts that were merged into a curve, stay as parts.
+void DemoteStubs(const CadReadOptions& options, internal::AbsorbedTubes* absorbed,
+                 HarnessDrawing* drawing) {
+  const size_t cables = drawing->cables.size();
+  for (size_t c = 0; c < cables; ++c) {
+    const DrawnCable& cable = drawing->cables[c];
+    const double length = cable.centreline.size() > 1 ? cable.centreline.s[cable.centreline.size() - 1] : 0;
+    if (absorbed->CableMarked(c) || !(cable.diameter > 0) ||
+        length >= options.min_tube_aspect * cable.diameter)
+      continue;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "a %s %.1f diameters long (%.4g mm across), less than the %.4g of a slender "
+                  "cable: kept as a solid part",
+                  cable.shape ? "tube" : "cable drawn as a curve", length / cable.diameter,
+                  1e3 * cable.diameter, options.min_tube_aspect);
+    const std::string name = cable.name.empty() ? std::string("unnamed") : cable.name;
+    if (cable.shape) {
+      DrawnSolid solid;
+      solid.name = cable.name;
+      solid.has_color = cable.has_color;
+      solid.color = cable.color;
+      solid.mesh = Tessellate(cable.shape->shape, options.mesh_relative_deflection);
+      solid.shape = cable.shape;
+      drawing->solids.push_back(std::move(solid));
+    }
+    absorbed->ReleaseSolidsOf(static_cast<int>(c));
+    internal::DrawnTube self;
+    self.is_cable = true;
+    self.index = static_cast<int>(c);
+    absorbed->Mark(self, "'" + name + "': " + line, drawing);
+  }
+}
+
 // A part instanced many times (the profile sketch of every wire) would say the same thing once
 // per instance: once, with the count.
 void CollapseRepeatedLines(std::vector<std::string>* lines) {
@@ -514,8 +555,13 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
     const std::vector<int> moved = JoinCurvePieces(&drawing, options.junction_tolerance);
     for (DrawnTube& t : tubes)
       if (t.is_cable) t.index = moved[static_cast<size_t>(t.index)];
-    MergeSweepsIntoCurves(tubes, &drawing);
-    MergeCoresIntoFlatJackets(tubes, &drawing);
+    AbsorbedTubes absorbed(drawing);
+    MergeSweepsIntoCurves(tubes, &drawing, &absorbed);
+    MergeCoresIntoFlatJackets(tubes, &drawing, &absorbed);
+    MergeCoreTails(tubes, options.min_tube_aspect, options.junction_tolerance, &drawing, &absorbed);
+    DemoteStubs(options, &absorbed, &drawing);
+    KeepBreakoutBranches(tubes, options.junction_tolerance, &absorbed, &drawing);
+    absorbed.RemoveFrom(&drawing);
   } catch (const Standard_Failure& e) {
     throw FileError(path, std::string("OCCT could not read the file: ") + e.GetMessageString());
   }

@@ -73,10 +73,13 @@ std::string Mm(double metres) {
 
 }  // namespace
 
-void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing) {
+void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing,
+                           AbsorbedTubes* shared) {
   std::vector<DrawnCable>& cables = drawing->cables;
   std::vector<char> claimed(tubes.size(), 0);
-  AbsorbedTubes absorbed(*drawing);
+  AbsorbedTubes own(*drawing);
+  AbsorbedTubes& absorbed = shared ? *shared : own;
+  for (size_t t = 0; t < tubes.size(); ++t) claimed[t] = absorbed.Marked(tubes[t]) ? 1 : 0;
   // Bare curves first: a conductor tube that is a curve's body goes with its curve, layers and all.
   for (int pass = 0; pass < 2; ++pass)
   for (size_t c = 0; c < cables.size(); ++c) {
@@ -158,21 +161,36 @@ void MergeSweepsIntoCurves(const std::vector<DrawnTube>& tubes, HarnessDrawing* 
       const std::string why = "'" + (name.empty() ? std::string("unnamed") : name) + "': " +
                               line + ": part of that cable (" + Mm(curve.diameter) +
                               " across), not a separate part";
-      absorbed.Mark(tube, why, drawing);
+      absorbed.Mark(tube, why, drawing, static_cast<int>(c));
     }
   }
-  absorbed.RemoveFrom(drawing);
+  if (!shared) own.RemoveFrom(drawing);
 }
 
-void AbsorbedTubes::Mark(const DrawnTube& tube, const std::string& why, HarnessDrawing* drawing) {
+void AbsorbedTubes::Mark(const DrawnTube& tube, const std::string& why, HarnessDrawing* drawing,
+                         int owner) {
   if (tube.skipped_note >= 0 && tube.skipped_note < static_cast<int>(drawing->skipped.size()))
     drawing->skipped[static_cast<size_t>(tube.skipped_note)] = why;
   else
     drawing->skipped.push_back(why);
   (tube.is_cable ? cable_ : solid_)[static_cast<size_t>(tube.index)] = 1;
+  if (!tube.is_cable) solid_owner_[static_cast<size_t>(tube.index)] = owner;
+}
+
+void AbsorbedTubes::ReleaseSolidsOf(int owner) {
+  for (size_t k = 0; k < solid_.size(); ++k)
+    if (solid_owner_[k] == owner && owner >= 0) solid_[k] = 0;
+}
+
+void AbsorbedTubes::Drop(const DrawnTube& tube, HarnessDrawing* drawing) {
+  if (tube.skipped_note >= 0 && tube.skipped_note < static_cast<int>(drawing->skipped.size()))
+    drawing->skipped[static_cast<size_t>(tube.skipped_note)].clear();
+  (tube.is_cable ? cable_ : solid_)[static_cast<size_t>(tube.index)] = 1;
 }
 
 void AbsorbedTubes::RemoveFrom(HarnessDrawing* drawing) const {
+  drawing->skipped.erase(std::remove(drawing->skipped.begin(), drawing->skipped.end(), std::string()),
+                         drawing->skipped.end());
   std::vector<DrawnCable> cables;
   for (size_t c = 0; c < drawing->cables.size(); ++c)
     if (c >= cable_.size() || !cable_[c]) cables.push_back(std::move(drawing->cables[c]));

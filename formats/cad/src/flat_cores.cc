@@ -40,15 +40,18 @@ bool InsideFlat(const DrawnCable& flat, const Vec3& p) {
 
 }  // namespace
 
-void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing) {
+void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing,
+                               AbsorbedTubes* shared) {
   std::vector<DrawnCable>& cables = drawing->cables;
-  AbsorbedTubes absorbed(*drawing);
+  AbsorbedTubes own(*drawing);
+  AbsorbedTubes& absorbed = shared ? *shared : own;
   for (const DrawnTube& tube : tubes) {
-    if (tube.centres.cols() == 0 || tube.inner_radius > 0) continue;
+    if (tube.centres.cols() == 0 || tube.inner_radius > 0 || absorbed.Marked(tube)) continue;
     const size_t index = static_cast<size_t>(tube.index);
     if (tube.is_cable ? index >= cables.size() : index >= drawing->solids.size()) continue;
-    for (const DrawnCable& jacket : cables) {
-      if (!jacket.flat || jacket.centreline.size() < 2) continue;
+    for (size_t j = 0; j < cables.size(); ++j) {
+      const DrawnCable& jacket = cables[j];
+      if (absorbed.CableMarked(j) || !jacket.flat || jacket.centreline.size() < 2) continue;
       // A core is thinner than the jacket.
       if (2 * tube.radius > jacket.flat->thickness * (1 + kInsideSlack)) continue;
       Eigen::Index inside = 0;
@@ -64,11 +67,11 @@ void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawi
                     "cable, not a separate one",
                     2e3 * tube.radius, jacket.name.c_str(), 100 * fraction);
       const std::string why = "'" + (name.empty() ? std::string("unnamed") : name) + "': " + line;
-      absorbed.Mark(tube, why, drawing);
+      absorbed.Mark(tube, why, drawing, static_cast<int>(j));
       break;
     }
   }
-  absorbed.RemoveFrom(drawing);
+  if (!shared) own.RemoveFrom(drawing);
 }
 
 }  // namespace cablefit::internal

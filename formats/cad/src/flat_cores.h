@@ -11,6 +11,8 @@ namespace cablefit::internal {
 /// the jacket's, not cables of their own. A round tube (a cable, or a solid part recorded in
 /// `tubes`) with at least half of its centres inside a flat cable's section leaves the drawing,
 /// with a line in `skipped` naming the flat cable it belongs to.
-void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing);
+/// With `absorbed` the cores are only marked there (see MergeSweepsIntoCurves).
+void MergeCoresIntoFlatJackets(const std::vector<DrawnTube>& tubes, HarnessDrawing* drawing,
+                               AbsorbedTubes* absorbed = nullptr);
 
 }  // namespace cablefit::internal

@@ -231,7 +231,7 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
     // whole area is only asked of a shape whose end faces pass.
     std::vector<EndFace> planar;
     std::vector<TopoDS_Face> curved;
-    double total_area = 0.0;
+    double planar_area = 0.0;
     for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
       const TopoDS_Face face = TopoDS::Face(ex.Current());
       const BRepAdaptor_Surface surface(face);
@@ -241,7 +241,7 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
       }
       GProp_GProps props;
       BRepGProp::SurfaceProperties(face, props);
-      total_area += props.Mass();
+      planar_area += props.Mass();
       const gp_Dir n = surface.Plane().Axis().Direction();
       EndFace end{face, props.Mass(), Vector3d::Zero(), Vector3d(n.X(), n.Y(), n.Z())};
       if (face.Orientation() == TopAbs_REVERSED) end.outward = -end.outward;
@@ -252,112 +252,125 @@ std::optional<RecoveredFlat> RecoverFlatStrip(const TopoDS_Shape& shape,
     if (planar.size() < 2) return std::nullopt;
     std::sort(planar.begin(), planar.end(),
               [](const EndFace& a, const EndFace& b) { return a.area < b.area; });
-    const EndFace& first = planar[0];
-    const EndFace& last = planar[1];
-    if (!(first.area > 0) || last.area > 1.2 * first.area) return std::nullopt;
-    // A shape that is no flat strip after all is tessellated again for what it is (a part,
-    // for contact), not kept at this strip's fine deflection.
-    struct Cleaner {
-      const TopoDS_Shape& shape;
-      bool keep = false;
-      ~Cleaner() {
-        if (!keep) BRepTools::Clean(shape);
+    // The end faces are a pair of equal planar faces, usually the two smallest; but a strip bent
+    // flatwise and edgewise in turn has short straight stretches whose flat sides are smaller
+    // than its ends, so the next pairs up are tried too (a side fails the outline or the march).
+    double curved_area = -1.0;  // summed once, when a pair first needs it
+    const auto from_ends = [&](const EndFace& first, const EndFace& last) -> std::optional<RecoveredFlat> {
+      if (!(first.area > 0) || last.area > 1.2 * first.area) return std::nullopt;
+      // A shape that is no flat strip after all is tessellated again for what it is (a part,
+      // for contact), not kept at this strip's fine deflection.
+      struct Cleaner {
+        const TopoDS_Shape& shape;
+        bool keep = false;
+        ~Cleaner() {
+          if (!keep) BRepTools::Clean(shape);
+        }
+      } cleaner{shape};
+      // Fine enough that the outline's extent is within a few per cent of the section.
+      const double deflection = 0.02 * std::sqrt(first.area);
+      const std::optional<Outline> start = FaceOutline(first, deflection);
+      const std::optional<Outline> stop = FaceOutline(last, deflection);
+      if (!start || !stop || !(start->thickness > 0) ||
+          start->width < options.min_width_ratio * start->thickness ||
+          std::abs(stop->width - start->width) > 0.1 * start->width ||
+          std::abs(stop->thickness - start->thickness) > 0.1 * start->thickness)
+        return std::nullopt;
+      // A rectangle fills its extent, a stadium 1 - (1 - pi/4) t / w of it; a cross or an L less.
+      // The outer outline only: bores of cores drawn inside a jacket do not count.
+      GProp_GProps outer;
+      BRepGProp::SurfaceProperties(BRepBuilderAPI_MakeFace(BRepTools::OuterWire(first.face), true).Face(),
+                                   outer);
+      const double fill = outer.Mass() / (start->width * start->thickness);
+      const double stadium_fill = 1 - (1 - std::numbers::pi / 4) * start->thickness / start->width;
+      if (fill > 1.02 || fill < stadium_fill - 0.03) return std::nullopt;
+      if (curved_area < 0) {
+        curved_area = 0;
+        for (const TopoDS_Face& face : curved) {
+          GProp_GProps props;
+          BRepGProp::SurfaceProperties(face, props);
+          curved_area += props.Mass();
+        }
       }
-    } cleaner{shape};
-    // Fine enough that the outline's extent is within a few per cent of the section.
-    const double deflection = 0.02 * std::sqrt(first.area);
-    const std::optional<Outline> start = FaceOutline(first, deflection);
-    const std::optional<Outline> stop = FaceOutline(last, deflection);
-    if (!start || !stop || !(start->thickness > 0) ||
-        start->width < options.min_width_ratio * start->thickness ||
-        std::abs(stop->width - start->width) > 0.1 * start->width ||
-        std::abs(stop->thickness - start->thickness) > 0.1 * start->thickness)
-      return std::nullopt;
-    // A rectangle fills its extent, a stadium 1 - (1 - pi/4) t / w of it; a cross or an L less.
-    // The outer outline only: bores of cores drawn inside a jacket do not count.
-    GProp_GProps outer;
-    BRepGProp::SurfaceProperties(BRepBuilderAPI_MakeFace(BRepTools::OuterWire(first.face), true).Face(),
-                                 outer);
-    const double fill = outer.Mass() / (start->width * start->thickness);
-    const double stadium_fill = 1 - (1 - std::numbers::pi / 4) * start->thickness / start->width;
-    if (fill > 1.02 || fill < stadium_fill - 0.03) return std::nullopt;
-    for (const TopoDS_Face& face : curved) {
-      GProp_GProps props;
-      BRepGProp::SurfaceProperties(face, props);
-      total_area += props.Mass();
-    }
-    if (first.area + last.area > 0.2 * total_area) return std::nullopt;
+      const double total_area = planar_area + curved_area;
+      if (first.area + last.area > 0.2 * total_area) return std::nullopt;
 
-    // The cuts' points are put back on the exact surfaces (TriangleSoup), so the strip's own
-    // tessellation can be 5 times coarser and its angular step 2.5 times: half the reading
-    // time of tests/data/flat/flat_cables.step, and more accurate (a 10 x 2 mm strip turned
-    // half a turn in 0.3 m reads 10.001 x 2.006 mm; the finer chords alone gave 2.069).
-    BRepMesh_IncrementalMesh(shape, kCutRelativeDeflection * std::sqrt(first.area), false,
-                             kCutAngularDeflection, false);
-    const TriangleSoup soup(shape, start->width);
-    if (soup.empty()) return std::nullopt;
-    const double step = std::max(options.sample_spacing, 0.25 * start->thickness);
-    const double radius = 0.75 * start->width + step;
-    // The strip's length is at most its lateral area over the thinnest outline's perimeter.
-    const double max_length = total_area / (2 * start->thickness) + 2 * step;
-    std::vector<Vector3d> centres{start->centre}, axes{start->wide_axis};
-    std::vector<double> widths{start->width}, thicknesses{start->thickness};
-    Vector3d tangent = -first.outward;
-    double length = 0.0;
-    Eigen::Matrix3Xd pts;
-    Eigen::VectorXd w;
-    while (true) {
-      const Vector3d& c = centres.back();
-      if ((last.centre - c).norm() < 1.5 * step && (last.centre - c).dot(-last.outward) < 0.5 * step)
-        break;
-      if (length > max_length) return std::nullopt;
-      // Predict along the last tangent, then cut again square to the step actually taken.
-      std::optional<Outline> cut;
-      Vector3d along = tangent;
-      for (int pass = 0; pass < 2; ++pass) {
-        soup.Cut(c + step * along, along, radius, &pts, &w);
-        cut = OutlineOf(pts, w, along);
-        if (!cut) break;
-        along = (cut->centre - c).normalized();
+      // The cuts' points are put back on the exact surfaces (TriangleSoup), so the strip's own
+      // tessellation can be 5 times coarser and its angular step 2.5 times: half the reading
+      // time of tests/data/flat/flat_cables.step, and more accurate (a 10 x 2 mm strip turned
+      // half a turn in 0.3 m reads 10.001 x 2.006 mm; the finer chords alone gave 2.069).
+      BRepMesh_IncrementalMesh(shape, kCutRelativeDeflection * std::sqrt(first.area), false,
+                               kCutAngularDeflection, false);
+      const TriangleSoup soup(shape, start->width);
+      if (soup.empty()) return std::nullopt;
+      const double step = std::max(options.sample_spacing, 0.25 * start->thickness);
+      const double radius = 0.75 * start->width + step;
+      // The strip's length is at most its lateral area over the thinnest outline's perimeter.
+      const double max_length = total_area / (2 * start->thickness) + 2 * step;
+      std::vector<Vector3d> centres{start->centre}, axes{start->wide_axis};
+      std::vector<double> widths{start->width}, thicknesses{start->thickness};
+      Vector3d tangent = -first.outward;
+      double length = 0.0;
+      Eigen::Matrix3Xd pts;
+      Eigen::VectorXd w;
+      while (true) {
+        const Vector3d& c = centres.back();
+        if ((last.centre - c).norm() < 1.5 * step && (last.centre - c).dot(-last.outward) < 0.5 * step)
+          break;
+        if (length > max_length) return std::nullopt;
+        // Predict along the last tangent, then cut again square to the step actually taken.
+        std::optional<Outline> cut;
+        Vector3d along = tangent;
+        for (int pass = 0; pass < 2; ++pass) {
+          soup.Cut(c + step * along, along, radius, &pts, &w);
+          cut = OutlineOf(pts, w, along);
+          if (!cut) break;
+          along = (cut->centre - c).normalized();
+        }
+        if (!cut) {
+          // No cut past the centre: the strip ended here, and it must be at the far end face.
+          if ((last.centre - c).norm() < 3 * step) break;
+          return std::nullopt;
+        }
+        if (std::abs(cut->width - start->width) > 0.15 * start->width ||
+            std::abs(cut->thickness - start->thickness) > 0.3 * start->thickness)
+          return std::nullopt;
+        tangent = along;
+        length += (cut->centre - c).norm();
+        Vector3d axis = cut->wide_axis;
+        if (axis.dot(axes.back()) < 0) axis = -axis;
+        centres.push_back(cut->centre);
+        axes.push_back(axis);
+        widths.push_back(cut->width);
+        thicknesses.push_back(cut->thickness);
       }
-      if (!cut) {
-        // No cut past the centre: the strip ended here, and it must be at the far end face.
-        if ((last.centre - c).norm() < 3 * step) break;
-        return std::nullopt;
+      Vector3d end_axis = stop->wide_axis;
+      if (end_axis.dot(axes.back()) < 0) end_axis = -end_axis;
+      if ((last.centre - centres.back()).norm() > 1e-9 * start->width) {
+        centres.push_back(stop->centre);
+        axes.push_back(end_axis);
+      } else {
+        axes.back() = end_axis;
       }
-      if (std::abs(cut->width - start->width) > 0.15 * start->width ||
-          std::abs(cut->thickness - start->thickness) > 0.3 * start->thickness)
-        return std::nullopt;
-      tangent = along;
-      length += (cut->centre - c).norm();
-      Vector3d axis = cut->wide_axis;
-      if (axis.dot(axes.back()) < 0) axis = -axis;
-      centres.push_back(cut->centre);
-      axes.push_back(axis);
-      widths.push_back(cut->width);
-      thicknesses.push_back(cut->thickness);
+      if (centres.size() < 3) return std::nullopt;
+      RecoveredFlat flat;
+      flat.centres.resize(3, static_cast<Eigen::Index>(centres.size()));
+      flat.wide_axes.resize(3, static_cast<Eigen::Index>(centres.size()));
+      for (size_t i = 0; i < centres.size(); ++i) {
+        flat.centres.col(static_cast<Eigen::Index>(i)) = centres[i];
+        flat.wide_axes.col(static_cast<Eigen::Index>(i)) = axes[i];
+      }
+      flat.width = Median(widths);
+      flat.thickness = Median(thicknesses);
+      flat.rounded_edges = fill < 0.95;
+      cleaner.keep = true;
+      return flat;
+    };
+    constexpr size_t kEndPairsTried = 4;
+    for (size_t k = 0; k + 1 < planar.size() && k < kEndPairsTried; ++k) {
+      if (std::optional<RecoveredFlat> flat = from_ends(planar[k], planar[k + 1])) return flat;
     }
-    Vector3d end_axis = stop->wide_axis;
-    if (end_axis.dot(axes.back()) < 0) end_axis = -end_axis;
-    if ((last.centre - centres.back()).norm() > 1e-9 * start->width) {
-      centres.push_back(stop->centre);
-      axes.push_back(end_axis);
-    } else {
-      axes.back() = end_axis;
-    }
-    if (centres.size() < 3) return std::nullopt;
-    RecoveredFlat flat;
-    flat.centres.resize(3, static_cast<Eigen::Index>(centres.size()));
-    flat.wide_axes.resize(3, static_cast<Eigen::Index>(centres.size()));
-    for (size_t i = 0; i < centres.size(); ++i) {
-      flat.centres.col(static_cast<Eigen::Index>(i)) = centres[i];
-      flat.wide_axes.col(static_cast<Eigen::Index>(i)) = axes[i];
-    }
-    flat.width = Median(widths);
-    flat.thickness = Median(thicknesses);
-    flat.rounded_edges = fill < 0.95;
-    cleaner.keep = true;
-    return flat;
+    return std::nullopt;
   } catch (const Standard_Failure&) {
     return std::nullopt;
   }

@@ -13,9 +13,12 @@
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
 
+#include <cmath>
+#include <optional>
 #include <string>
 
 #include "cablefit/core/base/errors.h"
+#include "tube_recovery.h"
 
 namespace cablefit {
 namespace {
@@ -30,6 +33,18 @@ bool IsValidTube(const TopoDS_Shape& shape) {
   int faces = 0;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) ++faces;
   return faces >= 3 && BRepCheck_Analyzer(shape).IsValid();
+}
+
+// Whether the reader takes `shape` back as a tube of `diameter` [mm]: the sweep's surface
+// approximation can meet its tolerance and still wander (a corrected-Frenet sweep along a
+// nearly straight spline gave a surface whose cross-sections were no circles), and the relaxed
+// STEP must read back as the same cables. Sampled as the reader samples (2 mm).
+bool ReadsBackAsTube(const TopoDS_Shape& shape, double diameter) {
+  TubeRecoveryOptions options;
+  options.sample_spacing = 2.0;
+  options.min_aspect = 0;
+  const std::optional<RecoveredTube> tube = RecoverTube(shape, options);
+  return tube && std::abs(2 * tube->radius - diameter) <= kTubeRelativeTolerance * diameter;
 }
 
 }  // namespace
@@ -71,6 +86,7 @@ TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
     // Corrected Frenet first (a smooth frame); the discrete trihedron where it fails: on a
     // nearly straight stretch with sub-micrometre noise (a mesh skeleton) the Frenet normal is
     // undefined and the corrected-Frenet sweep's surface approximation gives up.
+    TopoDS_Shape valid;  // a valid sweep the reader would not take back, if nothing better
     for (const bool discrete : {false, true}) {
       try {
         BRepOffsetAPI_MakePipeShell shell(spine);
@@ -87,11 +103,15 @@ TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
         shell.SetMaxSegments(kTubeMaxSegments);
         shell.SetTolerance(kTubeRelativeTolerance * diameter);
         shell.Build();
-        if (shell.IsDone() && shell.MakeSolid() && IsValidTube(shell.Shape())) return shell.Shape();
+        if (shell.IsDone() && shell.MakeSolid() && IsValidTube(shell.Shape())) {
+          if (ReadsBackAsTube(shell.Shape(), diameter)) return shell.Shape();
+          if (valid.IsNull()) valid = shell.Shape();
+        }
       } catch (const Standard_Failure& e) {
         problem = std::string("could not sweep the tube: ") + e.GetMessageString();
       }
     }
+    if (!valid.IsNull()) return valid;
   } catch (const Standard_Failure& e) {
     throw InvalidInput(std::string("could not sweep the tube: ") + e.GetMessageString());
   }

@@ -52,7 +52,13 @@ TDF_Label AddNamedShape(const Handle(TDocStd_Document)& doc, const TopoDS_Shape&
                         const std::string& name, const std::optional<SrgbColor>& color) {
   Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
   const TDF_Label label = shapes->AddShape(shape, /*makeAssembly=*/false);
-  TDataStd_Name::Set(label, TCollection_ExtendedString(name.c_str(), /*isMultiByte=*/true));
+  const TCollection_ExtendedString text(name.c_str(), /*isMultiByte=*/true);
+  TDataStd_Name::Set(label, text);
+  // A located shape (a solid copied from an input assembly) is added as an instance of an
+  // unnamed product, and readers take the product's name ("1", "2"...): name it too.
+  TDF_Label product;
+  if (XCAFDoc_ShapeTool::IsReference(label) && XCAFDoc_ShapeTool::GetReferredShape(label, product))
+    TDataStd_Name::Set(product, text);
   if (color) {
     XCAFDoc_DocumentTool::ColorTool(doc->Main())
         ->SetColor(label, Quantity_Color(color->r, color->g, color->b, Quantity_TOC_sRGB),

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "cablefit/core/base/errors.h"
+#include "cablefit/formats/internal/tube_slices.h"
 #include "cablefit/formats/mesh_file.h"
 #include "hollow_tubes.h"
 #include "mcf_skeleton.h"
@@ -309,11 +310,13 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
       const std::vector<Vec3> tangents = Tangents(stations, step, 2 * r0);
       std::vector<Vec3> refined;
       std::vector<Section> sections;
+      std::vector<char> circular;
       for (size_t i = 0; i < stations.size(); ++i) {
         const Section s = CrossSection(mesh, grid, stations[i], tangents[i], 2 * r0);
         if (s.ok) sections.push_back(s);
         // Near a branch point the cut is no circle: keep the skeleton's point there.
         refined.push_back(s.ok ? s.centre : stations[i]);
+        circular.push_back(s.ok ? 1 : 0);
       }
       const double ok_fraction = static_cast<double>(sections.size()) / stations.size();
       if (ok_fraction < 0.6 || closed) {
@@ -327,7 +330,21 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
           radii.push_back(s.radius);
           residuals.push_back(s.residual * s.residual);
         }
-        const double radius = Median(radii);
+        double radius = Median(radii);
+        // The cuts go through the facets, inside the surface, and a coarse tessellation's facets
+        // wander about the axis: the vertices lie on the surface itself. Known-radius fits to
+        // the vertices in a slab about each centre (the scan tracer's slice fit) put the route
+        // on the axis, and their free radii give the tube's radius.
+        {
+          Eigen::Matrix3Xd centres(3, static_cast<Eigen::Index>(pts.size()));
+          for (size_t i = 0; i < pts.size(); ++i) centres.col(static_cast<Eigen::Index>(i)) = pts[i];
+          const internal::TubeSlices slices = internal::FitTubeSlices(mesh.vertices, radius, radius, &centres);
+          // Where the cut was no circle (a branch point, where the branches' routes meet at
+          // the skeleton's point) the route stays as it was.
+          for (size_t i = 0; i < pts.size(); ++i)
+            if (circular[i]) pts[i] = centres.col(static_cast<Eigen::Index>(i));
+          if (slices.radius > 0) radius = slices.radius;
+        }
         const int n = static_cast<int>(pts.size());
         // Carry free ends out to the caps, where the skeleton stops short.
         if (route.start_is_end) {
@@ -400,11 +417,98 @@ std::optional<MeshTube> HollowTube(const TriangleMesh& mesh, int component) {
   return std::move(outer);
 }
 
+// The volume a closed surface bounds, negative when its faces point inwards (a bore drawn as a
+// closed surface of its own, facing the hollow it bounds).
+double SignedVolume(const TriangleMesh& mesh) {
+  double six_v = 0;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f)
+    six_v += mesh.vertices.col(mesh.faces(0, f))
+                 .dot(mesh.vertices.col(mesh.faces(1, f)).cross(mesh.vertices.col(mesh.faces(2, f))));
+  return six_v / 6;
+}
+
+// Whether every point of `inner`'s centreline lies within a quarter of `outer`'s radius of
+// `outer`'s centreline (plus its sampling chord): the two run along one axis.
+bool Coaxial(const MeshTube& inner, const MeshTube& outer) {
+  const double chord = outer.centreline.ChordLength() / std::max(1, outer.centreline.size());
+  for (int i = 0; i < inner.centreline.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < outer.centreline.size(); ++j)
+      nearest = std::min(nearest, (inner.centreline.points.col(i) - outer.centreline.points.col(j)).norm());
+    if (nearest > 0.25 * 0.5 * outer.diameter + chord) return false;
+  }
+  return true;
+}
+
+// A cable drawn as concentric closed surfaces (a coax: conductor, dielectric, jacket, each a
+// shell of its own) is one cable of the outer diameter: each tube lying along the axis of a
+// wider one of another component, within it, is that tube's layer. Its bore, if it has one,
+// is filled by the layer that fits it; an inner surface facing inwards is its bore.
+void MergeConcentricLayers(std::vector<MeshTube>* tubes, const std::vector<char>& cavity) {
+  std::vector<size_t> order(tubes->size());
+  std::iota(order.begin(), order.end(), 0);
+  // Widest first, so that every layer goes to the outermost tube around it.
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return (*tubes)[a].diameter > (*tubes)[b].diameter; });
+  std::vector<char> absorbed(tubes->size(), 0);
+  for (size_t oi = 0; oi < order.size(); ++oi) {
+    MeshTube& outer = (*tubes)[order[oi]];
+    if (absorbed[order[oi]]) continue;
+    for (size_t ii = oi + 1; ii < order.size(); ++ii) {
+      const MeshTube& inner = (*tubes)[order[ii]];
+      if (absorbed[order[ii]] || inner.component == outer.component ||
+          !(inner.diameter < 0.98 * outer.diameter) || !Coaxial(inner, outer))
+        continue;
+      absorbed[order[ii]] = 1;
+      // A surface facing inwards bounds the hollow: the bore of a hose drawn as two shells.
+      if (cavity[static_cast<size_t>(inner.component)]) {
+        if (outer.inner_diameter == 0) outer.inner_diameter = inner.diameter;
+        continue;
+      }
+      outer.layers.push_back(inner.diameter);
+      outer.layer_components.push_back(inner.component);
+      for (size_t k = 0; k < inner.layers.size(); ++k) {
+        outer.layers.push_back(inner.layers[k]);
+        outer.layer_components.push_back(inner.layer_components[k]);
+      }
+      if (outer.inner_diameter > 0 && inner.diameter >= 0.9 * outer.inner_diameter)
+        outer.inner_diameter = 0;  // the bore is filled
+    }
+  }
+  std::vector<MeshTube> kept;
+  for (size_t k = 0; k < tubes->size(); ++k)
+    if (!absorbed[k]) kept.push_back(std::move((*tubes)[k]));
+  *tubes = std::move(kept);
+}
+
 }  // namespace
+
+// Solids exported together that touch along a surface (a coax's conductor, dielectric and
+// jacket as three solids, each meshed on its own) leave that surface twice, once facing each
+// way; welded, its edges have four faces and nothing is a closed surface. The doubled faces are
+// the inside of one body: without them the layers are the one closed surface around them all.
+TriangleMesh WithoutDoubledFaces(const TriangleMesh& mesh) {
+  std::map<std::array<int, 3>, int> count;
+  const auto key = [&](Eigen::Index f) {
+    std::array<int, 3> k = {mesh.faces(0, f), mesh.faces(1, f), mesh.faces(2, f)};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) ++count[key(f)];
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f)
+    if (count[key(f)] % 2 == 1) kept.push_back(f);
+  if (kept.size() == static_cast<size_t>(mesh.faces.cols())) return mesh;
+  TriangleMesh out;
+  out.vertices = mesh.vertices;
+  out.faces.resize(3, static_cast<Eigen::Index>(kept.size()));
+  for (size_t i = 0; i < kept.size(); ++i) out.faces.col(static_cast<Eigen::Index>(i)) = mesh.faces.col(kept[i]);
+  return out;
+}
 
 MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
   MeshContents out;
-  const std::vector<TriangleMesh> components = ConnectedComponents(mesh);
+  const std::vector<TriangleMesh> components = ConnectedComponents(WithoutDoubledFaces(mesh));
   for (size_t c = 0; c < components.size(); ++c) {
     const int component = static_cast<int>(c);
     try {
@@ -431,6 +535,9 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
       }
     }
   }
+  std::vector<char> cavity(components.size());
+  for (size_t c = 0; c < components.size(); ++c) cavity[c] = SignedVolume(components[c]) < 0;
+  MergeConcentricLayers(&out.tubes, cavity);
   return out;
 }
 

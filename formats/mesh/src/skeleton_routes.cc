@@ -1,38 +1,55 @@
 #include "skeleton_routes.h"
 
+#include <algorithm>
 #include <functional>
+#include <map>
+#include <utility>
 #include <limits>
 #include <numeric>
 
 namespace cablefit {
 
 std::vector<TriangleMesh> ConnectedComponents(const TriangleMesh& mesh) {
-  const int nv = static_cast<int>(mesh.vertices.cols());
-  std::vector<int> parent(nv);
+  // Faces are connected through shared edges, not vertices: nested closed shells whose caps
+  // were fanned from the same axis point (a coax drawn as concentric tubes) share that one
+  // vertex once welded, and are still separate surfaces.
+  const int nf = static_cast<int>(mesh.faces.cols());
+  std::vector<int> parent(nf);
   std::iota(parent.begin(), parent.end(), 0);
-  std::function<int(int)> find = [&](int v) { return parent[v] == v ? v : parent[v] = find(parent[v]); };
-  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
-    for (int k = 1; k < 3; ++k) parent[find(mesh.faces(k, f))] = find(mesh.faces(0, f));
+  std::function<int(int)> find = [&](int f) { return parent[f] == f ? f : parent[f] = find(parent[f]); };
+  std::map<std::pair<int, int>, int> first_face_of_edge;
+  for (int f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.faces(k, f), b = mesh.faces((k + 1) % 3, f);
+      const auto [it, inserted] = first_face_of_edge.emplace(std::make_pair(std::min(a, b), std::max(a, b)), f);
+      if (!inserted) parent[find(f)] = find(it->second);
+    }
   }
-  std::vector<int> component_of_root(nv, -1), local(nv, -1);
-  std::vector<std::vector<int>> component_vertices;
+  std::vector<int> component_of_root(nf, -1);
   std::vector<std::vector<int>> component_faces;
-  for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
-    const int root = find(mesh.faces(0, f));
+  for (int f = 0; f < nf; ++f) {
+    const int root = find(f);
     if (component_of_root[root] < 0) {
       component_of_root[root] = static_cast<int>(component_faces.size());
       component_faces.emplace_back();
-      component_vertices.emplace_back();
     }
-    const int c = component_of_root[root];
-    component_faces[c].push_back(static_cast<int>(f));
-    for (int k = 0; k < 3; ++k) {
-      const int v = mesh.faces(k, f);
-      if (local[v] < 0) {
-        local[v] = static_cast<int>(component_vertices[c].size());
-        component_vertices[c].push_back(v);
+    component_faces[component_of_root[root]].push_back(f);
+  }
+  // A vertex may belong to several components: each gets its own copy.
+  std::vector<std::vector<int>> component_vertices(component_faces.size());
+  std::vector<std::vector<int>> local_faces(component_faces.size());
+  std::vector<int> local(mesh.vertices.cols(), -1);
+  for (size_t c = 0; c < component_faces.size(); ++c) {
+    for (const int f : component_faces[c])
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh.faces(k, f);
+        if (local[v] < 0) {
+          local[v] = static_cast<int>(component_vertices[c].size());
+          component_vertices[c].push_back(v);
+        }
+        local_faces[c].push_back(local[v]);
       }
-    }
+    for (const int v : component_vertices[c]) local[v] = -1;
   }
   std::vector<TriangleMesh> result(component_faces.size());
   for (size_t c = 0; c < result.size(); ++c) {
@@ -43,9 +60,7 @@ std::vector<TriangleMesh> ConnectedComponents(const TriangleMesh& mesh) {
     }
     m.faces.resize(3, static_cast<Eigen::Index>(component_faces[c].size()));
     for (size_t i = 0; i < component_faces[c].size(); ++i) {
-      for (int k = 0; k < 3; ++k) {
-        m.faces(k, static_cast<Eigen::Index>(i)) = local[mesh.faces(k, component_faces[c][i])];
-      }
+      for (int k = 0; k < 3; ++k) m.faces(k, static_cast<Eigen::Index>(i)) = local_faces[c][3 * i + k];
     }
   }
   return result;

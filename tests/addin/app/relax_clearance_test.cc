@@ -8,18 +8,13 @@
 #include <fstream>
 
 #include "cablefit/core/base/errors.h"
+#include "curve_distance.h"
 #include "test_support.h"
 
 namespace cablefit::addin {
 namespace {
 
-Polyline Line(const Vec3& a, const Vec3& b, int n = 41) {
-  Polyline p;
-  p.points.resize(3, n);
-  for (int i = 0; i < n; ++i) p.points.col(i) = a + (b - a) * i / (n - 1.0);
-  p.ParameteriseByChords();
-  return p;
-}
+Polyline Line(const Vec3& a, const Vec3& b, int n = 41) { return testing::StraightLine(a, b, n); }
 
 // The plane z = 0 facing +z.
 TriangleMesh Floor() {

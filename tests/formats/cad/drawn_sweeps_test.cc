@@ -101,19 +101,24 @@ TEST(DrawnSweeps, AFreeCadCableDrawnAsCurvesAndSweepsIsReadOnceWithItsDiameters)
   // insulation sweep (stripped at one end), and the bundle's sheath around its base curve.
   const HarnessDrawing d = ReadCadFile(
       (testing::SourceDir() / "tests/data/realcad/cables_example1_visible.step").string());
-  int from_sweeps = 0;
-  for (const DrawnCable& c : d.cables) {
-    if (c.name.rfind("Cable001_", 0) != 0) continue;
-    ++from_sweeps;
-    const double expected = c.name == "Cable001_Base" ? 0.01295 : 0.003657;
-    EXPECT_NEAR(c.diameter, expected, 2e-5) << c.name;
-  }
-  EXPECT_EQ(from_sweeps, 11);
-  // The second assembly's sweeps are placed 38 mm away from its curves in the file: they stay
-  // separate (tube cables with their insulation merged in, and bare curves).
-  for (const DrawnSolid& s : d.solids) EXPECT_NE(s.name, "Cable001") << "a sweep left as a part";
+  // The cores' curves take their sweeps' 3.657 mm (and, being stripped core ends, then go
+  // with the cable); the base curve takes the 12.95 mm sheath, which makes it 9.2 diameters
+  // long: too stout for a cable, so it and its sheath are a part, and no sweep is a cable.
   for (const DrawnCable& c : d.cables)
-    EXPECT_NE(c.name.rfind("Cable001#", 0), 0u) << c.name << ": a sweep read as a second cable";
+    EXPECT_NE(c.name.rfind("Cable001", 0), 0u) << c.name;
+  int cores = 0, base = 0;
+  for (const std::string& line : d.skipped) {
+    cores += line.find("3.657 mm core ") != std::string::npos &&
+             line.find("out of the end of cable 'Cable001_Base'") != std::string::npos;
+    base += line.find("'Cable001_Base': a cable drawn as a curve 9.2 diameters long (12.95 mm") !=
+            std::string::npos;
+  }
+  EXPECT_EQ(cores, 10);  // five at each end
+  EXPECT_EQ(base, 1);
+  EXPECT_EQ(std::count_if(d.solids.begin(), d.solids.end(),
+                          [](const DrawnSolid& s) { return s.name == "Cable001"; }),
+            1)
+      << "the sheath is a part";
 }
 
 }  // namespace

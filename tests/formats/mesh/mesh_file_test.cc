@@ -248,3 +248,114 @@ TEST(MeshFile, RoutesDoNotDependOnWhatTheProcessDidBefore) {
 
 }  // namespace
 }  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+// `mesh` written as a millimetre STL and read back.
+MeshContents ReadBackAsStl(const TriangleMesh& mesh, const std::string& tag) {
+  const auto path = (testing::FreshTempDir(tag) / (tag + ".stl")).string();
+  WriteMeshFile(path, mesh, 0.001);
+  return ReadMeshContents(path, 0.001);
+}
+
+TriangleMesh Concatenated(const std::vector<TriangleMesh>& parts) {
+  TriangleMesh m;
+  Eigen::Index nv = 0, nf = 0;
+  for (const TriangleMesh& p : parts) {
+    nv += p.vertices.cols();
+    nf += p.faces.cols();
+  }
+  m.vertices.resize(3, nv);
+  m.faces.resize(3, nf);
+  Eigen::Index v = 0, f = 0;
+  for (const TriangleMesh& p : parts) {
+    m.vertices.middleCols(v, p.vertices.cols()) = p.vertices;
+    m.faces.middleCols(f, p.faces.cols()) = p.faces.array() + static_cast<int>(v);
+    v += p.vertices.cols();
+    f += p.faces.cols();
+  }
+  return m;
+}
+
+// A coax cable drawn as concentric closed shells (conductor, dielectric, jacket; each a
+// component of its own, nested): one cable of the jacket's diameter with its layers listed,
+// not three cables on one axis (which met at both ends as a loop and failed to relax).
+TEST(MeshFile, ConcentricShellsAreOneCableOfTheOuterDiameterWithItsLayers) {
+  const Polyline route = SampleCurve(BentRoute, 161);
+  const TriangleMesh coax = Concatenated(
+      {SweepTubeMesh(route, 0.0012, 32), SweepTubeMesh(route, 0.004, 32), SweepTubeMesh(route, 0.0052, 32)});
+  const MeshContents contents = ReadBackAsStl(coax, "mesh_coax");
+  EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  const MeshTube& cable = contents.tubes[0];
+  EXPECT_NEAR(cable.diameter, 0.0052, 0.01 * 0.0052);
+  EXPECT_EQ(cable.inner_diameter, 0.0);
+  ASSERT_EQ(cable.layers.size(), 2u);
+  EXPECT_NEAR(cable.layers[0], 0.004, 0.01 * 0.004);
+  EXPECT_NEAR(cable.layers[1], 0.0012, 0.01 * 0.0012);
+  EXPECT_LT(MaxDistanceToPolyline(cable.centreline, SampleCurve(BentRoute, 4001)), 0.01 * 0.0052);
+}
+
+// A hose with a core through its bore: one cable, the bore filled; a tube beside the hose (not
+// on its axis) stays a cable of its own.
+TEST(MeshFile, ACoreInAHoseBoreIsALayerButATubeBesideItIsNot) {
+  const Polyline route = SampleCurve(BentRoute, 161);
+  Polyline beside = route;
+  beside.points.row(2).array() += 0.02;
+  const TriangleMesh m = Concatenated({HoseMesh(route, 0.010, 0.006, 32), SweepTubeMesh(route, 0.0058, 32),
+                                       SweepTubeMesh(beside, 0.004, 32)});
+  const MeshContents contents = ReadBackAsStl(m, "mesh_hose_core");
+  ASSERT_EQ(contents.tubes.size(), 2u);
+  const MeshTube& hose = contents.tubes[0].diameter > contents.tubes[1].diameter ? contents.tubes[0]
+                                                                                 : contents.tubes[1];
+  EXPECT_NEAR(hose.diameter, 0.010, 0.01 * 0.010);
+  EXPECT_EQ(hose.inner_diameter, 0.0);
+  ASSERT_EQ(hose.layers.size(), 1u);
+  EXPECT_NEAR(hose.layers[0], 0.0058, 0.01 * 0.0058);
+}
+
+// The same layers exported as touching solids (a core, and a hose whose bore is the core's
+// surface, each meshed on its own): the shared surface is there twice, facing both ways, and
+// welded it made nothing a closed surface. Read as the one body it bounds: one cable.
+TEST(MeshFile, LayersExportedAsTouchingSolidsAreOneCable) {
+  const Polyline route = SampleCurve(BentRoute, 161);
+  const TriangleMesh m = Concatenated({SweepTubeMesh(route, 0.006, 32), HoseMesh(route, 0.010, 0.006, 32)});
+  const MeshContents contents = ReadBackAsStl(m, "mesh_touching_layers");
+  EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  EXPECT_NEAR(contents.tubes[0].diameter, 0.010, 0.01 * 0.010);
+  EXPECT_EQ(contents.tubes[0].inner_diameter, 0.0);
+  EXPECT_LT(MaxDistanceToPolyline(contents.tubes[0].centreline, SampleCurve(BentRoute, 4001)), 0.01 * 0.010);
+}
+
+// A coarse tessellation (12 sides): the cuts through its facets lie inside the surface (a 12-gon
+// averages 1.1 % inside its circle), its vertices on it. The slice fits on the vertices give
+// the diameter and keep the route on the axis.
+TEST(MeshFile, ACoarselyTessellatedTubeHasItsTrueDiameterFromItsVertices) {
+  const double diameter = 0.010;
+  const TriangleMesh tube = SweepTubeMesh(SampleCurve(BentRoute, 81), diameter, 12);
+  const std::vector<MeshTube> tubes = ReadBackAsStl(tube, "mesh_coarse").tubes;
+  ASSERT_EQ(tubes.size(), 1u);
+  std::printf("12-sided tube: diameter %.5f mm (drawn 10), route max %.2e m off\n",
+              1e3 * tubes[0].diameter, MaxDistanceToPolyline(tubes[0].centreline, SampleCurve(BentRoute, 4001)));
+  EXPECT_NEAR(tubes[0].diameter, diameter, 1e-3 * diameter);
+  EXPECT_LT(MaxDistanceToPolyline(tubes[0].centreline, SampleCurve(BentRoute, 4001)), 0.01 * diameter);
+}
+
+// A hose drawn as two closed shells, its bore's faces pointing into the hollow: one hollow
+// cable, the bore its inner diameter (not a layer).
+TEST(MeshFile, ABoreDrawnAsAnInwardShellIsTheHollowOfItsTube) {
+  const Polyline route = SampleCurve(BentRoute, 161);
+  TriangleMesh bore = SweepTubeMesh(route, 0.006, 32);
+  bore.faces.row(1).swap(bore.faces.row(2));
+  const MeshContents contents =
+      ReadBackAsStl(Concatenated({SweepTubeMesh(route, 0.010, 32), bore}), "mesh_bore_shell");
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  EXPECT_NEAR(contents.tubes[0].diameter, 0.010, 0.01 * 0.010);
+  EXPECT_NEAR(contents.tubes[0].inner_diameter, 0.006, 0.01 * 0.006);
+  EXPECT_TRUE(contents.tubes[0].layers.empty());
+}
+
+}  // namespace
+}  // namespace cablefit

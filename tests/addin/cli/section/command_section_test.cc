@@ -178,3 +178,45 @@ TEST(SectionCommandTest, TextFormatSummarisesWithUnitsAndJsonStaysTheDefaultWhen
 
 }  // namespace
 }  // namespace cablefit
+
+namespace cablefit {
+namespace {
+
+// An output never replaces an input: --out naming SECTION.json (directly, through another path,
+// or as a hard link) or the material library it names is refused with exit 2, and the file is
+// left as it was.
+TEST(SectionCommandTest, OutThatIsAnInputIsRefusedAndTheInputKept) {
+  const auto dir = testing::FreshTempDir("section_out_input");
+  const std::filesystem::path lib = dir / "lib.json";
+  std::filesystem::copy_file(Library(), lib);
+  const std::string text = R"({"library": ")" + lib.string() + R"(",
+      "components": [{"name": "w", "wire": "FLRY-B 1", "position": [0, 0]}],
+      "torsion": {"finest_cells": 32, "levels": 2}})";
+  const std::string file = Write(dir, "s.json", text);
+  std::filesystem::create_directory(dir / "sub");
+  std::filesystem::create_hard_link(file, dir / "sub" / "link.json");
+  const std::string lib_text = testing::ReadTextFile(lib);
+  for (const std::string& out : {file, (dir / "sub" / ".." / "s.json").string(),
+                                 (dir / "sub" / "link.json").string(), lib.string()}) {
+    const CliRun r = RunCli({"section", file, "--out", out});
+    EXPECT_EQ(r.code, 2) << out;
+    EXPECT_EQ(r.err.rfind("cablefit: --out " + out + ": is the input ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(testing::ReadTextFile(file), text);
+    EXPECT_EQ(testing::ReadTextFile(lib), lib_text);
+  }
+  const CliRun folder = RunCli({"section", file, "--out", (dir / "sub").string()});
+  EXPECT_EQ(folder.code, 2);
+  EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
+  const CliRun empty = RunCli({"section", file, "--out", ""});
+  EXPECT_EQ(empty.code, 2);
+  EXPECT_NE(empty.err.find("empty"), std::string::npos) << empty.err;
+  // A new file beside the input is fine.
+  const CliRun ok = RunCli({"section", file, "--out", (dir / "r.json").string()});
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "r.json"));
+}
+
+}  // namespace
+}  // namespace cablefit

@@ -17,6 +17,10 @@ struct MeshTube {
   double diameter = 0.0; ///< [m], twice the median distance of its surface to the centreline
   double inner_diameter = 0.0; ///< [m] bore of a hollow tube (hose, conduit), 0 when solid
   double fit_error = 0.0;///< RMS of (surface distance to centreline - radius) [m]
+  /// Concentric layers drawn inside it as closed surfaces of their own (a coax cable's
+  /// dielectric and conductor), outermost first: their diameters [m] and components.
+  std::vector<double> layers;
+  std::vector<int> layer_components;
 };
 
 /// A connected component of a mesh that is no cable: a bracket, a frame, a short stout part.

@@ -1,0 +1,201 @@
+#include "core_tails.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace cablefit::internal {
+namespace {
+
+// Slack on "inside the end section", as a fraction of the cable's radius (or half thickness):
+// tessellated end faces and a core touching the jacket's inner wall are within it.
+constexpr double kSectionSlack = 0.1;
+// A round cable's cores are at most this fraction of its diameter (two side by side and the
+// jacket); a tube as thick as the cable at its end continues the route (a splice).
+constexpr double kRoundCoreFraction = 0.6;
+
+struct CableEnd {
+  Vec3 point, out;  // end centre [m], unit tangent pointing away from the cable
+  Vec3 wide;        // a flat cable's wide axis there (unit), zero for a round one
+};
+
+CableEnd EndOf(const DrawnCable& cable, bool at_start) {
+  const Eigen::Matrix3Xd& p = cable.centreline.points;
+  const Eigen::Index n = p.cols();
+  // The tangent over a few samples: the last segment alone can be a sliver.
+  const Eigen::Index k = std::min<Eigen::Index>(3, n - 1);
+  CableEnd end;
+  end.point = at_start ? p.col(0) : p.col(n - 1);
+  const Vec3 inner = at_start ? p.col(k) : p.col(n - 1 - k);
+  end.out = (end.point - inner).normalized();
+  end.wide = Vec3::Zero();
+  if (cable.flat && cable.flat->wide_axes.cols() == n) {
+    const Vec3 u = cable.flat->wide_axes.col(at_start ? 0 : n - 1);
+    end.wide = (u - u.dot(end.out) * end.out).normalized();
+  }
+  return end;
+}
+
+// Whether `root` (a tube end centre) lies in the cable's section at `end`: within its outline
+// across, and no farther beyond the end face than the slack (it may start deeper inside).
+bool InEndSection(const DrawnCable& cable, const CableEnd& end, const Vec3& root,
+                  double tube_radius) {
+  const Vec3 d = root - end.point;
+  const double along = d.dot(end.out);
+  const Vec3 across = d - along * end.out;
+  if (cable.flat) {
+    const double half_t = 0.5 * cable.flat->thickness, half_w = 0.5 * cable.flat->width;
+    if (along > kSectionSlack * half_t) return false;
+    const Vec3 v = end.out.cross(end.wide);
+    return std::abs(across.dot(end.wide)) <= half_w - tube_radius + kSectionSlack * half_t &&
+           std::abs(across.dot(v)) <= half_t - tube_radius + kSectionSlack * half_t;
+  }
+  const double radius = 0.5 * cable.diameter;
+  return along <= kSectionSlack * radius &&
+         across.norm() <= radius - tube_radius + kSectionSlack * radius;
+}
+
+const std::string& NameOf(const DrawnTube& tube, const HarnessDrawing& drawing) {
+  return tube.is_cable ? drawing.cables[static_cast<size_t>(tube.index)].name
+                       : drawing.solids[static_cast<size_t>(tube.index)].name;
+}
+
+// How many cables other than `tube` itself have an end within `tolerance` of `p`.
+int CableEndsAt(const std::vector<DrawnCable>& cables, const Vec3& p, double tolerance,
+                const DrawnTube& tube) {
+  int count = 0;
+  for (size_t c = 0; c < cables.size(); ++c) {
+    const Eigen::Matrix3Xd& q = cables[c].centreline.points;
+    if (q.cols() < 2 || (tube.is_cable && static_cast<size_t>(tube.index) == c)) continue;
+    count += (q.col(0) - p).norm() <= tolerance || (q.col(q.cols() - 1) - p).norm() <= tolerance;
+  }
+  return count;
+}
+
+double ChainLength(const Eigen::Matrix3Xd& points) {
+  double length = 0;
+  for (Eigen::Index i = 1; i < points.cols(); ++i) length += (points.col(i) - points.col(i - 1)).norm();
+  return length;
+}
+
+// A cable drawn as a bare route curve has no section to start a tail in. Its stripped cores
+// are then told by how they are drawn: short curves (under half of it) that leave its end
+// square to its end face, side by side in that face (several, at distinct points, parallel to
+// its end tangent). The branches of a breakout start at one point instead, and a splice
+// continues one route with one curve.
+constexpr double kParallel = 0.985;  // cos 10 degrees
+
+std::vector<size_t> BareCurveTails(const std::vector<DrawnTube>& candidates,
+                                   const DrawnCable& parent, size_t parent_index,
+                                   const CableEnd& end, const AbsorbedTubes& absorbed) {
+  const double parent_length = ChainLength(parent.centreline.points);
+  std::vector<size_t> tails;
+  std::vector<Vec3> roots;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const DrawnTube& t = candidates[k];
+    if (absorbed.Marked(t) || (t.is_cable && static_cast<size_t>(t.index) == parent_index)) continue;
+    const double length = ChainLength(t.centres);
+    if (!(length < 0.5 * parent_length) || t.centres.cols() < 2) continue;
+    for (const bool root_first : {true, false}) {
+      const Eigen::Index n = t.centres.cols();
+      const Vec3 root = t.centres.col(root_first ? 0 : n - 1);
+      const Vec3 next = t.centres.col(root_first ? std::min<Eigen::Index>(3, n - 1)
+                                                 : std::max<Eigen::Index>(n - 4, 0));
+      const Vec3 d = root - end.point;
+      const double along = d.dot(end.out);
+      if (std::abs(along) > 0.05 * length || (d - along * end.out).norm() > 0.5 * length) continue;
+      if ((next - root).normalized().dot(end.out) < kParallel) continue;
+      tails.push_back(k);
+      roots.push_back(root);
+      break;
+    }
+  }
+  if (tails.size() < 2) return {};
+  for (size_t i = 0; i < roots.size(); ++i)
+    for (size_t j = i + 1; j < roots.size(); ++j)
+      if ((roots[i] - roots[j]).norm() < 1e-3 * parent_length) return {};
+  return tails;
+}
+
+std::string TailLine(const DrawnTube& tube, const std::string& name, const std::string& cable) {
+  char size[32] = "";
+  if (tube.radius > 0) std::snprintf(size, sizeof size, "%.4g mm ", 2e3 * tube.radius);
+  char line[240];
+  std::snprintf(line, sizeof line,
+                "'%s': a %s%s %.4g mm long out of the end of cable '%s' (a stripped core end): "
+                "part of that cable, not a separate one",
+                name.empty() ? "unnamed" : name.c_str(), size,
+                tube.inner_radius > 0 ? "sleeve" : "core", 1e3 * ChainLength(tube.centres),
+                cable.c_str());
+  return line;
+}
+
+}  // namespace
+
+void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
+                    double junction_tolerance, HarnessDrawing* drawing, AbsorbedTubes* absorbed) {
+  const std::vector<DrawnCable>& cables = drawing->cables;
+  // Candidates: the recovered tubes (cables or parts), then the cables that are no tube solid
+  // (a core's route curve with its sweeps merged into it, or a bare curve).
+  std::vector<DrawnTube> candidates;
+  for (const DrawnTube& tube : tubes)
+    if (tube.centres.cols() >= 2) candidates.push_back(tube);
+  for (size_t c = 0; c < cables.size(); ++c) {
+    if (cables[c].shape || cables[c].centreline.size() < 2) continue;
+    DrawnTube curve;
+    curve.is_cable = true;
+    curve.index = static_cast<int>(c);
+    curve.centres = cables[c].centreline.points;
+    curve.radius = 0.5 * cables[c].diameter;
+    curve.inner_radius = 0.5 * cables[c].inner_diameter;
+    candidates.push_back(std::move(curve));
+  }
+  for (const DrawnTube& tube : candidates) {
+    if (absorbed->Marked(tube)) continue;
+    const double length = ChainLength(tube.centres);
+    const Vec3 first = tube.centres.col(0), last = tube.centres.col(tube.centres.cols() - 1);
+    for (size_t c = 0; c < cables.size(); ++c) {
+      const DrawnCable& cable = cables[c];
+      if (absorbed->CableMarked(c) || !(cable.diameter > 0) || cable.centreline.size() < 2) continue;
+      if (tube.is_cable && static_cast<size_t>(tube.index) == c) continue;
+      // A core fits the flat jacket's thickness, or beside another core in a round one.
+      const double widest = cable.flat ? cable.flat->thickness * (1 + kSectionSlack)
+                                       : kRoundCoreFraction * cable.diameter;
+      if (!(2 * tube.radius <= widest)) continue;
+      if (!(length < min_aspect * cable.diameter)) continue;
+      // Shorter than the cable it would belong to: two tails side by side are not each other's.
+      if (!(length < ChainLength(cable.centreline.points))) continue;
+      bool tail = false;
+      for (const bool at_start : {true, false}) {
+        const CableEnd end = EndOf(cable, at_start);
+        for (const bool root_first : {true, false}) {
+          const Vec3& root = root_first ? first : last;
+          const Vec3& tip = root_first ? last : first;
+          // It runs out of the cable: its far end is clear of the end face by its diameter (a
+          // tail may bend sideways right after the jacket).
+          tail = tail || (InEndSection(cable, end, root, tube.radius) &&
+                          (tip - end.point).dot(end.out) > std::max(2 * tube.radius, 0.1 * length) &&
+                          CableEndsAt(cables, root, junction_tolerance, tube) < 2);
+        }
+      }
+      if (!tail) continue;
+      absorbed->Mark(tube, TailLine(tube, NameOf(tube, *drawing), cable.name), drawing,
+                     static_cast<int>(c));
+      break;
+    }
+  }
+  for (size_t c = 0; c < cables.size(); ++c) {
+    const DrawnCable& parent = cables[c];
+    if (absorbed->CableMarked(c) || parent.diameter > 0 || parent.shape || parent.centreline.size() < 2)
+      continue;
+    for (const bool at_start : {true, false}) {
+      for (const size_t k : BareCurveTails(candidates, parent, c, EndOf(parent, at_start), *absorbed)) {
+        const DrawnTube& tube = candidates[k];
+        absorbed->Mark(tube, TailLine(tube, NameOf(tube, *drawing), parent.name), drawing,
+                       static_cast<int>(c));
+      }
+    }
+  }
+}
+
+}  // namespace cablefit::internal
