@@ -73,14 +73,15 @@ int BenchDiagnose(const std::string& dir) {
       const double s = std::chrono::duration<double>(t2 - t0).count();
       (d.shape ? shape : force).push_back(s);
       std::printf("diagnose_%s: %.3f s (%s, %s)\n", TerminalSafe(name).c_str(), s,
-                  d.shape ? "shape" : "force", TerminalSafe(d.effect).c_str());
+                  d.shape ? "shape" : "force", TerminalSafe(EffectsName(d)).c_str());
       if (d.shape) {
         const ShapeDiagnosisCost& c = d.shape->cost;
-        std::printf("  observation %.3f s, recording %.3f s, nominal %.3f s, fits %.3f s "
-                    "(%d forward solves, %d LM iterations), final solves %.3f s, "
+        std::printf("  observation %.3f s, recording %.3f s, nominal %.3f s, fits %.3f s, "
+                    "pairs %.3f s (%d forward solves, %d LM iterations), final solves %.3f s, "
                     "pictures and report %.3f s\n",
                     d.observation_seconds, c.recording_seconds, c.nominal_seconds,
-                    c.fits_seconds, c.forward_solves, c.lm_iterations, c.final_seconds,
+                    c.fits_seconds, c.pairs_seconds, c.forward_solves, c.lm_iterations,
+                    c.final_seconds,
                     std::chrono::duration<double>(t2 - t1).count());
       }
     } catch (const std::exception& e) {

@@ -36,13 +36,12 @@ Eigen::VectorXd Concat(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 }
 
 // Where a pair starts: from both single fits (each absorbed some of the other cause, so the sum
-// overshoots, but it often lies in the right basin); from one single fit with the other effect at
-// its neutral start (what a forward selection step would start from) where that start is unique;
-// and, for an effect whose fit is not convex (a curvature span's place and width, a contact's
-// place, anisotropy and twist angles), from every start of that effect with the other at its
-// single fit, since a single fit that absorbed the other cause sits in the wrong basin. The same
-// effect twice (two curvature spans, two contacts) starts its second copy at the effect's starts
-// away from the fitted first.
+// overshoots, but it often lies in the right basin), and from every start of either effect with
+// the other at its single fit: a single fit that absorbed the other cause can sit in the wrong
+// basin of a non-convex effect (a curvature span's place and width, a contact's place, angles),
+// or where its effect does nothing and has no gradient (a clamp compliance fitted to zero). The
+// same effect twice (two curvature spans, two contacts) starts its second copy at the effect's
+// starts away from the fitted first.
 std::vector<Eigen::VectorXd> PairStarts(const EffectModel& ma, const Fit& fa, const EffectModel& mb,
                                         const Fit& fb, bool same_model, double length) {
   std::vector<Eigen::VectorXd> starts;
@@ -52,12 +51,8 @@ std::vector<Eigen::VectorXd> PairStarts(const EffectModel& ma, const Fit& fa, co
     return starts;
   }
   starts.push_back(Concat(fa.x, fb.x));
-  if (mb.starts.size() == 1) starts.push_back(Concat(fa.x, mb.starts.front()));
-  if (ma.starts.size() == 1) starts.push_back(Concat(ma.starts.front(), fb.x));
-  if (mb.starts.size() > 2)
-    for (const Eigen::VectorXd& s : mb.starts) starts.push_back(Concat(fa.x, s));
-  if (ma.starts.size() > 2)
-    for (const Eigen::VectorXd& s : ma.starts) starts.push_back(Concat(s, fb.x));
+  for (const Eigen::VectorXd& s : mb.starts) starts.push_back(Concat(fa.x, s));
+  for (const Eigen::VectorXd& s : ma.starts) starts.push_back(Concat(s, fb.x));
   return starts;
 }
 

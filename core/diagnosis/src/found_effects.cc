@@ -39,19 +39,6 @@ FoundEffect Describe(const EffectModel& model, const Eigen::VectorXd& x,
   return f;
 }
 
-// A twist preload's named alternative (the other clamp turned the other way) holds only while
-// the cable's shape sees nothing but the twist between the clamps: not beside an anisotropy or
-// a natural curvature.
-void DropTwistAlternative(ShapeEffect other, FoundEffect* f) {
-  if (f->effect != ShapeEffect::kTwistPreload) return;
-  if (other != ShapeEffect::kAnisotropicBending && other != ShapeEffect::kIntrinsicCurvature)
-    return;
-  for (const char* key : {"alternative_clamp", "alternative_angle"}) {
-    f->parameters.erase(key);
-    f->units.erase(key);
-  }
-}
-
 }  // namespace
 
 std::vector<FoundEffect> DescribeFoundEffects(const PreparedRecording& recording,
@@ -93,7 +80,6 @@ std::vector<FoundEffect> DescribeFoundEffects(const PreparedRecording& recording
                            ? WhereTheyDiffer(shape, without[p], recording.s)
                            : mismatch;
     FoundEffect f = Describe(part, PartParameters(model, models, static_cast<int>(p), x), context);
-    DropTwistAlternative(models[static_cast<size_t>(model.parts[1 - p])].effect, &f);
     // Shapley: the gain of adding this part first (alone vs nominal) and second (joint vs the
     // other alone), averaged.
     const double first = c0 - alone_cost[p], second = alone_cost[1 - p] - c_all;

@@ -246,6 +246,8 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     // moment is constant along it; pins and clips pass it on): with exactly two clamps that hold
     // the twist, turning the other one the opposite way gives the same shape, exactly. Which of
     // them was turned cannot be told from the shape; the description names the alternative.
+    // This holds beside a fitted natural curvature or anisotropy too: the two twists differ by a
+    // constant turn of every cross-section, which their fitted direction takes up.
     std::optional<int> other;
     {
       std::vector<int> holding;

@@ -25,7 +25,8 @@ void KeepBreakoutBranches(const std::vector<DrawnTube>& tubes, double tolerance,
     const double reach = std::max(tolerance, 0.05 * tube->radius);
     // Its neighbours: cables, and other stout segments (a node where every segment is short).
     bool joined = false;
-    for (const Vec3 end : {Vec3(tube->centres.col(0)), Vec3(tube->centres.col(tube->centres.cols() - 1))}) {
+    const Vec3 ends[] = {tube->centres.col(0), tube->centres.col(tube->centres.cols() - 1)};
+    for (const Vec3& end : ends) {
       for (size_t c = 0; c < drawing->cables.size() && !joined; ++c)
         joined = !(c < absorbed->CableCount() && absorbed->CableMarked(c)) &&
                  EndNear(drawing->cables[c].centreline.points, end, reach);

@@ -107,7 +107,9 @@ std::optional<int> HideEffect(const std::string& effect, const RodSpec& nominal,
     const double w = nominal.material.linear_density * 9.81 * L;
     const double a = 2 * M_PI * u(rng), drawn = (0.3 + 0.4 * u(rng)) * L;
     const double sc = place.where >= 0 ? place.where * L : drawn;
-    t.point_loads.push_back({sc, NormalPush(nominal, sc, f * (0.034 + 0.056 * u(rng)) * w, a)});
+    // Normal to the cable as it hangs with what was hidden before (a support pushes on the real
+    // cable, not on the drawing).
+    t.point_loads.push_back({sc, NormalPush(t, sc, f * (0.034 + 0.056 * u(rng)) * w, a)});
   } else if (effect == "clamp_compliance") {
     const int k = clamp_of(u(rng) < 0.5);
     RodSimulator sim;

@@ -28,8 +28,8 @@ std::vector<Layout> CorpusLayouts();
 /// does. `gravity_number` > 0 sets w L^3 / EI instead of drawing it (2-35).
 RodSpec MakeNominal(const Layout& lay, std::mt19937& rng, double gravity_number = 0.0);
 
-/// A support's push of `magnitude` [N] at arc length `sc` of the nominal, normal to the cable
-/// there, at `angle` [rad] about the cable from the direction against gravity.
+/// A support's push of `magnitude` [N] at arc length `sc` of the cable `nominal` describes,
+/// normal to it there, at `angle` [rad] about the cable from the direction against gravity.
 Vec3 NormalPush(const RodSpec& nominal, double sc, double magnitude, double angle);
 
 /// Where a hidden effect goes: a clamp (clamp effects; < 0 = either, at random) and, for a

@@ -46,8 +46,10 @@ void ExpectReadsBackAsTheSameCables(const fs::path& input) {
     EXPECT_NEAR(c.centreline.s[c.centreline.size() - 1] / length, 1.0, 1e-3) << name;
     EXPECT_NEAR(c.diameter / diameter, 1.0, 1e-3) << name;
     EXPECT_EQ(c.flat.has_value(), cable.contains("flat")) << name;
-    if (c.flat && cable.contains("flat"))
-      EXPECT_NEAR(c.flat->thickness / cable.at("flat").at("thickness").get<double>(), 1.0, 0.02) << name;
+    if (c.flat && cable.contains("flat")) {
+      EXPECT_NEAR(c.flat->thickness / cable.at("flat").at("thickness").get<double>(), 1.0, 0.02)
+          << name;
+    }
     EXPECT_NEAR(c.inner_diameter, cable.at("inner_diameter").get<double>(), 1e-3 * diameter) << name;
   }
   // Solids from CAD are copied (a mesh's parts are not: they have no CAD shape).
