@@ -87,7 +87,8 @@ std::string EffectsTable(const DiagnosedCase& d) {
   }
   h << "</tbody></table>\n<p style=\"color:var(--muted);font-size:13px\">Share: the part of "
        "the nominal model's mismatch (sum of squared offsets) each effect removes in the joint "
-       "fit, averaged over both orders of adding the effects.</p>\n";
+       "fit, which is shared in proportion to the mismatch that comes back when the effect is "
+       "left out.</p>\n";
   return h.str();
 }
 

@@ -73,6 +73,17 @@ std::vector<FoundEffect> DescribeFoundEffects(const PreparedRecording& recording
     without[p] = r.solution.centerline;
     alone_cost[1 - p] = ThinnedCost(ctx, without[p]);  // two parts: leaving one out keeps the other
   }
+  // What each part adds to the joint fit: the mismatch that comes back when it is left out. The
+  // part the whole fit removes is shared in proportion (each part alone can even make the
+  // mismatch worse when the other part compensates it, so gains alone would not add up).
+  std::vector<double> adds(n, NAN);
+  double sum = 0.0;
+  for (size_t p = 0; p < n; ++p) {
+    if (!std::isfinite(alone_cost[1 - p])) continue;
+    adds[p] = std::max(0.0, alone_cost[1 - p] - c_all);
+    sum += adds[p];
+  }
+  const double removed = fraction(c0 - c_all);
   std::vector<FoundEffect> found;
   for (size_t p = 0; p < n; ++p) {
     const EffectModel& part = models[static_cast<size_t>(model.parts[p])];
@@ -80,11 +91,7 @@ std::vector<FoundEffect> DescribeFoundEffects(const PreparedRecording& recording
                            ? WhereTheyDiffer(shape, without[p], recording.s)
                            : mismatch;
     FoundEffect f = Describe(part, PartParameters(model, models, static_cast<int>(p), x), context);
-    // Shapley: the gain of adding this part first (alone vs nominal) and second (joint vs the
-    // other alone), averaged.
-    const double first = c0 - alone_cost[p], second = alone_cost[1 - p] - c_all;
-    f.share = std::isfinite(first) && std::isfinite(second) ? fraction(0.5 * (first + second))
-                                                            : NAN;
+    f.share = std::isfinite(adds[p]) ? removed * (sum > 0 ? adds[p] / sum : 1.0 / n) : NAN;
     found.push_back(std::move(f));
   }
   std::stable_sort(found.begin(), found.end(), [](const FoundEffect& a, const FoundEffect& b) {

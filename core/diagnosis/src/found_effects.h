@@ -14,7 +14,8 @@ namespace cablefit {
 
 /// The effects of `models[chosen]` fitted at `x` (none: empty; a single effect: one; a pair:
 /// two), dominant first. `final_solves` holds the nominal and the chosen model at full accuracy;
-/// a pair's parts are solved once more each, alone, for their shares and where they act.
+/// a pair's parts are solved once more each, alone (the other left out), for their shares and
+/// where they act.
 /// `mismatch` is where the nominal differs most from the recording (a single effect that acts on
 /// the whole cable is reported there).
 std::vector<FoundEffect> DescribeFoundEffects(const PreparedRecording& recording,

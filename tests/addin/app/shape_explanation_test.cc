@@ -29,6 +29,12 @@ ShapeDiagnosis TwistAtFirstClamp() {
                   {"alternative_angle", -0.5}};
   d.baseline_max = 0.004;
   d.fitted_max = 0.0002;
+  FoundEffect found;
+  found.effect = d.effect;
+  found.clamp = d.clamp;
+  found.parameters = d.parameters;
+  found.share = 0.99;
+  d.effects = {found};
   EffectCandidate twist, compliance;
   twist.effect = ShapeEffect::kTwistPreload;
   twist.score = 0.6;
@@ -71,14 +77,42 @@ TEST(ShapeExplanationTest, AnUnexplainedRecordingSaysWhatToCheck) {
   d.adequacy.degrees_of_freedom = 300;
   d.adequacy.limit = 390;
   const std::string text = ExplainShapeDiagnosis(d, TwoClamps());
-  EXPECT_EQ(text.rfind("No effect of the catalogue explains the recording: the best fit "
-                       "(twist_preload)",
+  EXPECT_EQ(text.rfind("No effect of the catalogue, alone or in pairs, explains the recording: "
+                       "the best fit (twist_preload)",
                        0),
             0u)
       << text;
   EXPECT_TRUE(Has(text, "5000 for 300 degrees of freedom, 99.9 % limit 390")) << text;
   EXPECT_TRUE(Has(text, "Best candidate: The clamp at s=0.000 m")) << text;
   EXPECT_FALSE(Has(text, "hardly separates")) << text;
+}
+
+TEST(ShapeExplanationTest, TwoEffectsAreEachWordedWithTheirShare) {
+  ShapeDiagnosis d;
+  d.baseline_max = 0.012;
+  d.fitted_max = 0.0001;
+  FoundEffect curvature, clamp;
+  curvature.effect = ShapeEffect::kIntrinsicCurvature;
+  curvature.interval = std::make_pair(0.2, 0.35);
+  curvature.parameters = {{"curvature", 4.0}};
+  curvature.share = 0.62;
+  clamp.effect = ShapeEffect::kClampOrientation;
+  clamp.clamp = 1;
+  clamp.parameters = {{"angle", 0.1}};
+  clamp.share = 0.37;
+  d.effects = {curvature, clamp};
+  d.effect = curvature.effect;
+  const std::string text = ExplainShapeDiagnosis(d, TwoClamps());
+  EXPECT_EQ(text.rfind("2 pieces of physics were left out; fitting them together reduces the max "
+                       "deviation from 12 mm to 0.1 mm.",
+                       0),
+            0u)
+      << text;
+  EXPECT_TRUE(Has(text, "(1) The cable has a natural curvature of 4.00 1/m")) << text;
+  EXPECT_TRUE(Has(text, "between s=0.200 m and s=0.350 m")) << text;
+  EXPECT_TRUE(Has(text, "62 % of the mismatch")) << text;
+  EXPECT_TRUE(Has(text, "(2) The clamp at s=1.000 m holds the cable 5.7 deg off")) << text;
+  EXPECT_TRUE(Has(text, "37 % of the mismatch")) << text;
 }
 
 TEST(ShapeExplanationTest, EveryNoteIsASentenceWithItsFigures) {

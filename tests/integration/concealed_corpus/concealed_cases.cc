@@ -177,6 +177,7 @@ ScannedTruth ScanTruth(const RodSpec& truth, const RodSpec& told, std::mt19937& 
   out.observation.noise_sigma = std::max(1e-5, sc.noise_sigma / 10.0);
   out.extraction_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.cloud = scan.cloud;
   return out;
 }
 

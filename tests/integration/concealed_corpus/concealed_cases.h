@@ -54,6 +54,7 @@ struct ScannedTruth {
   bool solved = false;          // false: the hidden truth itself could not be solved
   std::string failure;          // why not
   ShapeObservation observation;
+  PointCloud cloud;  // the synthetic scan itself
   double extraction_seconds = 0.0;
 };
 

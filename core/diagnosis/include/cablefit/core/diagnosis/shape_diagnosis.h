@@ -102,8 +102,8 @@ struct FoundEffect {
   std::map<std::string, Vec3> vectors;
   std::map<std::string, std::string> units;
   /// The part of the baseline mismatch (sum of squared offsets) the effect removes in the joint
-  /// fit [-]: its gain averaged over both orders of adding the effects (the Shapley value), so
-  /// the shares add up to the part the whole fit removes.
+  /// fit [-]: what the whole fit removes, shared in proportion to the mismatch that comes back
+  /// when the effect is left out of it; the shares add up to what the whole fit removes.
   double share = 0.0;
 };
 
