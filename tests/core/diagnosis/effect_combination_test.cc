@@ -5,36 +5,15 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "two_clamp_setup.h"
+
 namespace cablefit {
 namespace {
 
-// A 1 m cable between two clamps 0.8 m apart, recorded as drawn straight between them.
-RodSpec TwoClamps() {
-  RodSpec spec;
-  spec.length = 1.0;
-  spec.material.bending_stiffness = 0.02;
-  spec.material.torsional_stiffness = 0.015;
-  spec.material.linear_density = 0.05;
-  spec.material.diameter = 0.008;
-  SupportSpec a;
-  a.position = Vec3(0, 0, 0);
-  a.tangent = Vec3(1, 0, 0);
-  a.normal = Vec3(0, 0, 1);
-  SupportSpec b = a;
-  b.s = 1.0;
-  b.position = Vec3(0.8, 0, 0);
-  spec.supports = {a, b};
-  return spec;
-}
+using testing::TwoClamps;
 
 std::vector<EffectModel> Models(const RodSpec& nominal) {
-  Eigen::Matrix3Xd points(3, 11);
-  Eigen::VectorXd s(11);
-  for (int i = 0; i <= 10; ++i) {
-    points.col(i) = Vec3(0.08 * i, 0, 0);
-    s[i] = 0.1 * i;
-  }
-  return BuildEffectModels(nominal, {0.01, 0.01}, points, s);
+  return testing::StraightRecordingModels(nominal, {0.01, 0.01});
 }
 
 int IndexOf(const std::vector<EffectModel>& models, ShapeEffect effect, int clamp = 0) {

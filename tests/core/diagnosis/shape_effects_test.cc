@@ -4,38 +4,15 @@
 
 #include <cmath>
 
+#include "two_clamp_setup.h"
+
 namespace cablefit {
 namespace {
 
-// A 1 m cable between two clamps.
-RodSpec TwoClamps() {
-  RodSpec spec;
-  spec.length = 1.0;
-  spec.material.bending_stiffness = 0.02;
-  spec.material.torsional_stiffness = 0.015;
-  spec.material.linear_density = 0.05;
-  spec.material.diameter = 0.008;
-  SupportSpec a;
-  a.position = Vec3(0, 0, 0);
-  a.tangent = Vec3(1, 0, 0);
-  a.normal = Vec3(0, 0, 1);
-  SupportSpec b = a;
-  b.s = 1.0;
-  b.position = Vec3(0.8, 0, 0);
-  spec.supports = {a, b};
-  return spec;
-}
+using testing::TwoClamps;
 
-// The models for `nominal` recorded as drawn straight from its first clamp to its second.
 std::vector<EffectModel> Models(const RodSpec& nominal, const std::vector<double>& moments) {
-  const Vec3 a = nominal.supports.front().position, b = nominal.supports.back().position;
-  Eigen::Matrix3Xd points(3, 11);
-  Eigen::VectorXd s(11);
-  for (int i = 0; i <= 10; ++i) {
-    points.col(i) = a + (b - a) * (i / 10.0);
-    s[i] = nominal.length * i / 10.0;
-  }
-  return BuildEffectModels(nominal, moments, points, s);
+  return testing::StraightRecordingModels(nominal, moments);
 }
 
 const EffectModel& ModelOf(const std::vector<EffectModel>& models, ShapeEffect effect,

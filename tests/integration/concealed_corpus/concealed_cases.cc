@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <thread>
 
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/scan_centerline_extractor.h"
@@ -179,6 +181,27 @@ ScannedTruth ScanTruth(const RodSpec& truth, const RodSpec& told, std::mt19937& 
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out.cloud = scan.cloud;
   return out;
+}
+
+std::optional<ScannedTruth> ScanOrReport(const char* layout, const std::string& label,
+                                         const RodSpec& truth, const RodSpec& told,
+                                         std::mt19937& rng, bool run) {
+  ScannedTruth scanned = ScanTruth(truth, told, rng, run);
+  if (scanned.solved) return scanned;
+  std::printf("%-7s %-45s truth solve failed: %s\n", layout, label.c_str(),
+              scanned.failure.c_str());
+  return std::nullopt;
+}
+
+ShapeDiagnosis DiagnoseAsCommand(const RodSpec& told, const ScannedTruth& scanned,
+                                 double* seconds) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ShapeDiagnosisOptions options;
+  options.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  ShapeDiagnosis d = DiagnoseShape(told, scanned.observation, options);
+  *seconds = scanned.extraction_seconds +
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return d;
 }
 
 }  // namespace cablefit::testing

@@ -63,4 +63,15 @@ struct ScannedTruth {
 /// lists fewer than two supports). Nothing but the draws happens unless `run`.
 ScannedTruth ScanTruth(const RodSpec& truth, const RodSpec& told, std::mt19937& rng, bool run);
 
+/// ScanTruth, printing a hidden truth that could not be solved (not a diagnosis result, but
+/// reported so that a regression in the solver shows): nullopt then.
+std::optional<ScannedTruth> ScanOrReport(const char* layout, const std::string& label,
+                                         const RodSpec& truth, const RodSpec& told,
+                                         std::mt19937& rng, bool run);
+
+/// DiagnoseShape of a scanned truth as `cablefit diagnose` runs one case (its fits on every
+/// core); `seconds` receives the extraction's and the diagnosis's time.
+ShapeDiagnosis DiagnoseAsCommand(const RodSpec& told, const ScannedTruth& scanned,
+                                 double* seconds);
+
 }  // namespace cablefit::testing

@@ -61,26 +61,15 @@ CaseOutcome RunCase(const char* layout, const std::string& label, bool subtle, c
                     const RodSpec& told, std::optional<int> truth_clamp, std::mt19937& rng,
                     bool run) {
   CaseOutcome out;
-  const testing::ScannedTruth scanned = testing::ScanTruth(h.truth, told, rng, run);
-  if (!scanned.solved) {
-    // The hidden truth itself could not be solved from the default shape: not a diagnosis
-    // result, but reported so a regression in the solver shows.
-    std::printf("%-7s %-24s truth solve failed: %s\n", layout, label.c_str(),
-                scanned.failure.c_str());
-    return out;
-  }
+  const std::optional<testing::ScannedTruth> scanned =
+      testing::ScanOrReport(layout, label, h.truth, told, rng, run);
+  if (!scanned) return out;
   if (!run) {
     out.got = "skipped";
     return out;
   }
-  const auto t0 = std::chrono::steady_clock::now();
   try {
-    const ShapeObservation& obs = scanned.observation;
-    ShapeDiagnosisOptions options;  // as `cablefit diagnose` of one case: fits on every core
-    options.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const ShapeDiagnosis dg = DiagnoseShape(told, obs, options);
-    out.seconds = scanned.extraction_seconds +
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const ShapeDiagnosis dg = testing::DiagnoseAsCommand(told, *scanned, &out.seconds);
     out.got = dg.explained ? ToString(dg.effect) : "unexplained";
     out.improvement = dg.baseline_max / std::max(dg.fitted_max, 1e-12);
     if (truth_clamp && out.got == label) {

@@ -114,23 +114,15 @@ Outcome RunPairCase(const char* layout, const std::string& label, const RodSpec&
   // A developer's filter (a substring of "layout label"): the others are drawn but not run.
   const char* only = std::getenv("CABLEFIT_CORPUS_ONLY");
   if (only && (std::string(layout) + " " + label).find(only) == std::string::npos) run = false;
-  const testing::ScannedTruth scanned = testing::ScanTruth(truth, nominal, rng, run);
-  if (!scanned.solved) {
-    std::printf("%-7s %-45s truth solve failed: %s\n", layout, label.c_str(),
-                scanned.failure.c_str());
-    return out;
-  }
+  const std::optional<testing::ScannedTruth> scanned =
+      testing::ScanOrReport(layout, label, truth, nominal, rng, run);
+  if (!scanned) return out;
   if (!run) {
     out.got = "skipped";
     return out;
   }
-  const auto t0 = std::chrono::steady_clock::now();
   try {
-    ShapeDiagnosisOptions options;
-    options.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const ShapeDiagnosis dg = DiagnoseShape(nominal, scanned.observation, options);
-    out.seconds = scanned.extraction_seconds +
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const ShapeDiagnosis dg = testing::DiagnoseAsCommand(nominal, *scanned, &out.seconds);
     std::vector<std::string> names;
     for (const FoundEffect& f : dg.effects) names.push_back(ToString(f.effect));
     out.got = dg.explained ? Multiset(names) : "unexplained";
