@@ -346,6 +346,7 @@ DiagnosisSummary DiagnoseRecording(const std::string& case_file, const std::stri
   s.interval = d.interval;
   s.parameters = d.parameters;
   s.candidates = d.candidates;
+  for (const addin::FoundEffectSummary& f : d.effects) s.effects.emplace_back(f.effect, f.share);
   s.baseline_max = d.baseline.max;
   s.fitted_max = d.fitted.max;
   s.deviation_unit = d.deviation_unit;

@@ -152,6 +152,8 @@ struct DiagnosisSummary {
   std::optional<std::pair<double, double>> interval;  // [m]
   std::map<std::string, double> parameters;
   std::vector<std::pair<std::string, double>> candidates;  ///< (effect, score), best first
+  /// Every effect found (effect, share of the baseline mismatch), dominant first; empty: none.
+  std::vector<std::pair<std::string, double>> effects;
   double baseline_max = 0.0, fitted_max = 0.0;  ///< in deviation_unit
   std::string deviation_unit;
   std::string explanation;

@@ -192,6 +192,7 @@ PYBIND11_MODULE(cablefit_native, m) {
       .def_readonly("interval", &DiagnosisSummary::interval)
       .def_readonly("parameters", &DiagnosisSummary::parameters)
       .def_readonly("candidates", &DiagnosisSummary::candidates)
+      .def_readonly("effects", &DiagnosisSummary::effects)
       .def_readonly("baseline_max", &DiagnosisSummary::baseline_max)
       .def_readonly("fitted_max", &DiagnosisSummary::fitted_max)
       .def_readonly("deviation_unit", &DiagnosisSummary::deviation_unit)

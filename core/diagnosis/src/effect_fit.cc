@@ -94,7 +94,8 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     const size_t b = static_cast<size_t>(j) / m.starts.size();
     Run& r = started[static_cast<size_t>(j)];
     r = Run{bases[b], {}, static_cast<int>(b)};
-    run(&r, m.starts[static_cast<size_t>(j) % m.starts.size()], screen ? 4 : max_iterations);
+    run(&r, m.starts[static_cast<size_t>(j) % m.starts.size()],
+        screen ? options.start_iterations : max_iterations);
   });
   std::vector<Run> runs;
   for (Run& r : started)

@@ -53,6 +53,9 @@ struct FitOptions {
   /// starts come from fits that were solved already: a start that a plain Newton solve cannot
   /// reach is then dropped at once instead of being continued for seconds.
   bool patient_start = true;
+  /// With more than two starts, each start runs this many iterations first and only the three
+  /// best distinct ones are carried on.
+  int start_iterations = 4;
 };
 
 /// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the

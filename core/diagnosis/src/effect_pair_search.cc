@@ -92,7 +92,8 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     const EffectModel& m = out.models[static_cast<size_t>(k)];
     Fit& f = out.fits[static_cast<size_t>(k)];
     f = FitEffect(ctx, {bases[static_cast<size_t>(branch_of(m))]}, m,
-                  {options.screen_iterations, 1, /*polish=*/false, /*patient_start=*/false});
+                  {options.screen_iterations, 1, /*polish=*/false, /*patient_start=*/false,
+                   options.start_iterations});
     f.branch = branch_of(m);
   });
   // 2. The most promising ones to their optimum, from where the screening left them.

@@ -21,6 +21,7 @@ namespace cablefit {
 struct PairSearchOptions {
   int max_iterations = 30;    // Levenberg-Marquardt iterations of a pair carried to its optimum
   int screen_iterations = 6;  // ... of every pair's screening
+  int start_iterations = 4;   // ... of each start before the screening keeps the best three
   int refits = 4;             // how many of the best screened pairs are carried to the optimum
   int threads = 1;            // the pairs run in parallel (same result on any count)
 };

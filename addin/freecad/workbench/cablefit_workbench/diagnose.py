@@ -39,7 +39,11 @@ def _add_shape(doc, group, name, label, shape, colour=None, point_size=None):
 
 
 def summary_text(d):
-    lines = ["%s (%s case): %s, confidence %.2f" % (d.name, d.kind, d.effect, d.confidence)]
+    found = " + ".join(e for e, _ in d.effects) if len(d.effects) > 1 else d.effect
+    lines = ["%s (%s case): %s, confidence %.2f" % (d.name, d.kind, found, d.confidence)]
+    if len(d.effects) > 1:
+        lines.append("  shares of the mismatch: " +
+                     ", ".join("%s %.0f %%" % (e, 100.0 * s) for e, s in d.effects))
     if d.interval:
         lines.append("  interval s = %.3f .. %.3f m" % d.interval)
     for k, v in sorted(d.parameters.items()):
