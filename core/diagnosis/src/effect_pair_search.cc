@@ -59,6 +59,7 @@ std::vector<Eigen::VectorXd> PairStarts(const EffectModel& ma, const Fit& fa, co
 }  // namespace
 
 PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                             const std::vector<RodSimulator>& coarse,
                              const RodSpec& nominal, const std::vector<EffectModel>& singles,
                              const std::vector<Fit>& single_fits,
                              const PairSearchOptions& options) {
@@ -82,7 +83,8 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
                             singles[static_cast<size_t>(second)], f2, a == b, nominal.length);
       out.models.push_back(std::move(m));
     }
-  // 1. Every pair screened: a few iterations from its starts, the pairs in parallel.
+  // 1. Every pair screened on the coarse level: a few iterations from its starts, the pairs in
+  //    parallel.
   const int n = static_cast<int>(out.models.size());
   out.fits.resize(static_cast<size_t>(n));
   auto branch_of = [&](const EffectModel& m) {
@@ -91,12 +93,13 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
   ParallelFor(n, options.threads, [&](int k) {
     const EffectModel& m = out.models[static_cast<size_t>(k)];
     Fit& f = out.fits[static_cast<size_t>(k)];
-    f = FitEffect(ctx, {bases[static_cast<size_t>(branch_of(m))]}, m,
+    f = FitEffect(ctx, {coarse[static_cast<size_t>(branch_of(m))]}, m,
                   {options.screen_iterations, 1, /*polish=*/false, /*patient_start=*/false,
                    options.start_iterations});
     f.branch = branch_of(m);
   });
-  // 2. The most promising ones to their optimum, from where the screening left them.
+  // 2. The most promising ones to their optimum on the fine model, from where the screening
+  //    left them.
   std::vector<int> order(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) order[static_cast<size_t>(k)] = k;
   std::stable_sort(order.begin(), order.end(), [&](int p, int q) {
@@ -108,12 +111,14 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     if (!out.fits[k].ok) return;
     EffectModel m = out.models[k];
     m.starts = {out.fits[k].x};
+    // On the fine model, which the screening's coarse solves only approximate: its first solve
+    // may need the continuation.
     Fit refit = FitEffect(ctx, {bases[static_cast<size_t>(out.fits[k].branch)]}, m,
-                          {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/false});
+                          {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
     refit.branch = out.fits[k].branch;
     refit.forward_solves += out.fits[k].forward_solves;
     refit.lm_iterations += out.fits[k].lm_iterations;
-    if (refit.ok && refit.cost <= out.fits[k].cost) out.fits[k] = std::move(refit);
+    out.fits[k] = std::move(refit);
   });
   for (const Fit& f : out.fits) {
     out.forward_solves += f.forward_solves;

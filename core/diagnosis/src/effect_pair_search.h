@@ -22,7 +22,7 @@ struct PairSearchOptions {
   int max_iterations = 30;    // Levenberg-Marquardt iterations of a pair carried to its optimum
   int screen_iterations = 6;  // ... of every pair's screening
   int start_iterations = 4;   // ... of each start before the screening keeps the best three
-  int refits = 4;             // how many of the best screened pairs are carried to the optimum
+  int refits = 8;             // how many of the best screened pairs are carried to the optimum
   int threads = 1;            // the pairs run in parallel (same result on any count)
 };
 
@@ -33,9 +33,11 @@ struct PairSearch {
   int lm_iterations = 0;
 };
 
-/// The pairs worth weighing, each fitted jointly to its optimum. `singles` and `single_fits` are the single
-/// effects and their fits (`none` among them); `bases` the nominal's equilibria they started from.
+/// The pairs worth weighing, each fitted jointly to its optimum. `singles` and `single_fits` are
+/// the single effects and their fits (`none` among them); `bases` the nominal's equilibria they
+/// started from, `coarse` the same on the coarse level (the screening's forward model).
 PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                             const std::vector<RodSimulator>& coarse,
                              const RodSpec& nominal, const std::vector<EffectModel>& singles,
                              const std::vector<Fit>& single_fits, const PairSearchOptions& options);
 

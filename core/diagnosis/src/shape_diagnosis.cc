@@ -270,7 +270,8 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     PairSearchOptions po;
     po.max_iterations = options.max_iterations;
     po.threads = options.threads;
-    PairSearch pairs = SearchEffectPairs(ctx, branches.bases, nominal, models, fits, po);
+    PairSearch pairs = SearchEffectPairs(ctx, branches.bases, branches.coarse, nominal, models,
+                                         fits, po);
     out.cost.forward_solves += pairs.forward_solves;
     out.cost.lm_iterations += pairs.lm_iterations;
     for (size_t i = 0; i < pairs.models.size(); ++i) {

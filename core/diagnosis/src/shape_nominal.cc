@@ -27,6 +27,12 @@ SimulationOptions FitSimulationOptions(const RodSpec& nominal) {
   return fit_opt;
 }
 
+SimulationOptions ScreenSimulationOptions(const RodSpec& nominal) {
+  SimulationOptions o = FitSimulationOptions(nominal);
+  o.min_levels = o.max_levels = 1;
+  return o;
+}
+
 NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecording& recording) {
   const SimulationOptions fit_opt = FitSimulationOptions(nominal);
   const double L = nominal.length;
@@ -46,6 +52,16 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
   // elsewhere (20 noise sigmas: far beyond the recording's scatter).
   out.bases = {base};
   out.starts = {NominalStart::kRecordedShape};
+  // The coarse twin of each equilibrium, solved from the fine one's shape.
+  auto add_coarse = [&](const Polyline& shape) {
+    RodSimulator coarse(ScreenSimulationOptions(nominal));
+    try {
+      coarse.Simulate(nominal, &shape);
+    } catch (const InvalidInput&) {
+    }
+    out.coarse.push_back(coarse);
+  };
+  add_coarse(nominal_fit_solution.solution.centerline);
   std::vector<Polyline> shapes{nominal_fit_solution.solution.centerline};
   const Eigen::VectorXd at = UniformArcLengths(L, 101);
   const double noise_sigma = recording.observation.noise_sigma;
@@ -65,6 +81,7 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
     shapes.push_back(r.solution.centerline);
     out.bases.push_back(sim);
     out.starts.push_back(how);
+    add_coarse(r.solution.centerline);
   };
   try_branch(nullptr, NominalStart::kSolverStart);
   if (nominal.supports.size() > 1) {

@@ -16,12 +16,17 @@ struct NominalBranches {
   /// One warm simulator per distinct equilibrium; the first is the one the recorded shape
   /// leads to.
   std::vector<RodSimulator> bases;
+  /// The same equilibria on the coarse level alone (no extrapolation): a screening's forward
+  /// model, about three times cheaper a solve, for ranking candidates that the fine one settles.
+  std::vector<RodSimulator> coarse;
   std::vector<NominalStart> starts;     // how each was reached
   std::vector<double> reaction_moment;  // [N m] moment magnitude at every support (first)
 };
 
 /// The forward model of the fits: two levels with extrapolation.
 SimulationOptions FitSimulationOptions(const RodSpec& nominal);
+/// Its coarse level alone.
+SimulationOptions ScreenSimulationOptions(const RodSpec& nominal);
 
 /// Throws InvalidInput when the nominal set-up cannot be solved from the recorded shape.
 NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecording& recording);
