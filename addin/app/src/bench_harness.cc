@@ -180,6 +180,8 @@ NetworkSpec KblSizedHarness(const KblSizedHarnessSize& size) {
                           junction[i] < 0);
     b.start_junction = junction[p];
     b.end_junction = junction[i];
+    b.length *= 1 + size.length_change;
+    for (SupportSpec& sp : b.supports) sp.s *= 1 + size.length_change;
     spec.branches.push_back(b);
   }
   return spec;

@@ -8,6 +8,7 @@
 #include <map>
 #include <numeric>
 
+#include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/network/network_simulator.h"
 #include "cablefit/app/batch_pool.h"
@@ -379,15 +380,66 @@ std::vector<OrientedBox> SolidBoxes(const HarnessDrawing& drawing) {
   return boxes;
 }
 
+namespace {
+
+// A network that did not converge as one: each of its cables relaxed on its own, with the ends
+// it has at junctions clamped where the drawing has them (the other cables hold a junction
+// there), so one stretch that cannot be solved leaves every other with a result.
+void RelaxCablesOneByOne(const HarnessDrawing& drawing, const RelaxGroup& group,
+                         const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
+                         const SimulationOptions& options, const std::string& why,
+                         GroupOutcome* out) {
+  out->cables.clear();
+  const std::string note = "the network of " + std::to_string(group.cables.size()) +
+                           " cables did not converge as one (" + why +
+                           "): relaxed on its own, its ends at junctions held as drawn";
+  for (int c : group.cables) {
+    try {
+      CableSetup setup = SetUpCable(drawing, c, boxes, config);
+      setup.notes.push_back(note);
+      CableRelaxation r = RelaxCable(std::move(setup), options, config.min_bend_radius_factor);
+      if (r.result.converged) {
+        out->cables.push_back(std::move(r));
+      } else {
+        out->cable_problems.emplace_back(
+            c, "the solver did not converge: " + r.result.solution.summary.message);
+      }
+    } catch (const Cancelled&) {
+      throw;
+    } catch (...) {
+      out->cable_problems.emplace_back(c, ErrorText(std::current_exception()));
+    }
+  }
+}
+
+}  // namespace
+
 GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& group,
                               const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
                               const SimulationOptions& options) {
   GroupOutcome out;
   try {
     if (group.network()) {
-      GroupRelaxation g = RelaxNetworkGroup(drawing, group, boxes, config, options);
+      GroupRelaxation g;
+      try {
+        g = RelaxNetworkGroup(drawing, group, boxes, config, options);
+      } catch (const Cancelled&) {
+        throw;
+      } catch (...) {
+        // A network that cannot even be set up (a branch too short to join two supports) is
+        // still a set of cables that can each be tried alone.
+        RelaxCablesOneByOne(drawing, group, boxes, config, options,
+                            ErrorText(std::current_exception()), &out);
+        return out;
+      }
       out.cables = std::move(g.cables);
       out.network = std::move(g.json);
+      for (const CableRelaxation& r : out.cables) {
+        if (r.result.converged) continue;
+        RelaxCablesOneByOne(drawing, group, boxes, config, options,
+                            r.result.solution.summary.message, &out);
+        return out;
+      }
     } else {
       CableSetup setup = SetUpCable(drawing, group.cables.front(), boxes, config);
       out.cables.push_back(RelaxCable(std::move(setup), options, config.min_bend_radius_factor));

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -113,6 +114,26 @@ void BenchKblSizedNetwork() {
   std::printf("kbl_network: %.3f s\n", solve + springback);
 }
 
+// The same harness with every segment cut shorter or longer than drawn (as harness.json's
+// "length": "+2%"): shorter pulls stretches taut, longer gives slack that sags and buckles.
+void BenchKblSizedLengths() {
+  for (const double change : {-0.02, 0.02, 0.05}) {
+    KblSizedHarnessSize size;
+    size.length_change = change;
+    const NetworkSpec spec = KblSizedHarness(size);
+    const NetworkRelaxPlan planned = PlanNetworkRelax(spec, SimulationOptions{});
+    const auto t0 = Clock::now();
+    const NetworkSimulation sim = SimulateNetwork(spec, planned.plan, planned.options);
+    const double solve = std::chrono::duration<double>(Clock::now() - t0).count();
+    char row[64];
+    std::snprintf(row, sizeof row, "kbl_network_cut_%s%d_pct", change < 0 ? "minus" : "plus",
+                  static_cast<int>(std::lround(100 * std::abs(change))));
+    std::printf("%s_converged: %d bool\n", row, sim.converged ? 1 : 0);
+    std::printf("%s_iterations: %d iterations\n", row, sim.newton_iterations);
+    std::printf("%s: %.3f s\n", row, solve);
+  }
+}
+
 // The harness with clips twice as sparse, so its spans sag, over a body panel tessellated as
 // finely as CAD exports panels: what the contact search and the active set cost.
 void BenchContact(int reps) {
@@ -202,6 +223,7 @@ int RunBench(const std::string& case_path, int reps) {
   }
   BenchNetwork(reps);
   BenchKblSizedNetwork();
+  BenchKblSizedLengths();
   BenchContact(reps);
   BenchMotionSweep(spec, reps);
   BenchNetworkMotionSweep();
@@ -228,6 +250,7 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
   cmd->callback([=] {
     if (*kbl_only) {
       BenchKblSizedNetwork();
+      BenchKblSizedLengths();
       *exit_code = kExitOk;
       return;
     }

@@ -304,6 +304,10 @@ int RunRelax(const RelaxArgs& a) {
         if (!a.quiet) bar.PrintLine(stdout, CableLine(f, r));
         f.cables[static_cast<size_t>(r.setup.cable)] = std::move(r);
       }
+      for (const auto& [c, why] : g.cable_problems) {
+        f.cable_errors[static_cast<size_t>(c)] = why;
+        fail(f, "cable '" + f.drawing.cables[static_cast<size_t>(c)].name + "': " + why, 3, k);
+      }
     } else {
       for (int c : job.group.cables) f.cable_errors[static_cast<size_t>(c)] = problem;
       fail(f, (job.group.cables.size() > 1 ? "cables '" : "cable '") + label + "': " + problem, 3,

@@ -198,6 +198,7 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
       addin::GroupOutcome r = addin::RelaxGroupCables(f.drawing, group, boxes, config, options);
       problem = r.problem;
       done = std::move(r.cables);
+      for (const auto& [c, why] : r.cable_problems) f.cable_errors[static_cast<size_t>(c)] = why;
       if (!r.network.is_null()) f.networks.push_back(std::move(r.network));
     }
     if (CancellationRequested()) problem = "cancelled";

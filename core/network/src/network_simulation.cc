@@ -350,7 +350,7 @@ void ExtractLoads(const NetworkModel& net, const RodState& st, const std::vector
       if (jl.item >= 0) {
         internal::EnergyAccumulator edge;
         edge.Reset(m, nullptr);
-        internal::AddEdgeBendingEnergy(m.edges[jl.edges[k]], st, &edge);
+        internal::AddEdgeBendingEnergy(m.edges[jl.edges[k]], jl.edges[k], st, &edge);
         mom = -(internal::quat::ToMatrix(st.q[jl.item]) * edge.gradient.segment<3>(3 * jl.item));
       }
       jload.force.push_back(f);

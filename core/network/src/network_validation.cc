@@ -32,7 +32,13 @@ std::string SupportLabel(const NetworkSpec& spec, int b, const SupportSpec& sp) 
 }
 
 // Every pair of position supports must be reachable: their distance at most the cable between.
+// Extensible branches (EA > 0) a little shorter than a span are stretched across it (solved,
+// with the tension that takes), up to kMaxAxialStrain when every branch is extensible.
 void CheckReach(const NetworkSpec& spec) {
+  const bool extensible =
+      std::all_of(spec.branches.begin(), spec.branches.end(),
+                  [](const BranchSpec& b) { return b.material.axial_stiffness > 0; });
+  const double stretch = extensible ? kMaxAxialStrain : 1e-9;
   const int nb = static_cast<int>(spec.branches.size());
   const int nj = static_cast<int>(spec.junctions.size());
   std::vector<NetworkPoint> points(nj);  // junctions first
@@ -81,7 +87,7 @@ void CheckReach(const NetworkSpec& spec) {
       const int p = fixed[a], q = fixed[k];
       if (points[p].branch == points[q].branch) continue;  // checked per branch
       const double gap = (position(p) - position(q)).norm();
-      if (dist[q] >= 0 && gap > dist[q] * (1 + 1e-9) + 1e-12 * total) {
+      if (dist[q] >= 0 && gap > dist[q] * (1 + stretch) + 1e-12 * total) {
         const auto [gap_text, dist_text] = DistinctNumbers(gap, dist[q]);
         throw InvalidInput(points[p].label + " and " + points[q].label + " are " + gap_text +
                            " m apart but only " + dist_text +

@@ -27,26 +27,50 @@ const std::array<Mat44, 3>& BilinearStrain() {
   return q;
 }
 
+// The frame of item a that the strain to b is measured from (a junction's rest rotation applied).
+Eigen::Vector4d StrainBase(const RodEdge& e, const RodState& state) {
+  return e.has_rest ? quat::Multiply(state.q[e.a], e.rest) : state.q[e.a];
+}
+
 }  // namespace
 
 void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc) {
-  for (const RodEdge& e : model.edges) AddEdgeBendingEnergy(e, state, acc);
+  for (size_t k = 0; k < model.edges.size(); ++k)
+    AddEdgeBendingEnergy(model.edges[k], static_cast<int>(k), state, acc);
 }
 
-void AddEdgeBendingEnergy(const RodEdge& e, const RodState& state, EnergyAccumulator* acc) {
+Vec3 RestCurvature(const RodEdge& e, int edge_index, const RodState& state) {
+  Vec3 u0 = state.natural_factor * e.natural;
+  if (state.drawn_factor != 0.0 && edge_index >= 0 &&
+      edge_index < static_cast<int>(state.drawn_curvature.size()))
+    u0 += state.drawn_factor * state.drawn_curvature[edge_index];
+  return u0;
+}
+
+std::vector<Eigen::Vector3d> DrawnCurvature(const RodModel& model, const RodState& state) {
+  std::vector<Eigen::Vector3d> u(model.edges.size());
+  for (size_t k = 0; k < model.edges.size(); ++k) {
+    const RodEdge& e = model.edges[k];
+    u[k] = (2.0 / e.ds) * (quat::LeftStrain(StrainBase(e, state)) * state.q[e.b]);
+  }
+  return u;
+}
+
+void AddEdgeBendingEnergy(const RodEdge& e, int edge_index, const RodState& state,
+                          EnergyAccumulator* acc) {
   const auto& qk = BilinearStrain();
   {
     const int ia = e.a, ib = e.b;
     // With a rest rotation, a's frame enters as q_a * rest: its chart is rotated by R_rest^T,
     // so a's gradient and Hessian rows are mapped back with R_rest.
-    const Eigen::Vector4d qa = e.has_rest ? quat::Multiply(state.q[ia], e.rest) : state.q[ia];
+    const Eigen::Vector4d qa = StrainBase(e, state);
     const Eigen::Matrix3d back = e.has_rest ? quat::ToMatrix(e.rest) : Eigen::Matrix3d::Identity();
     const Eigen::Vector4d& qb = state.q[ib];
     const Mat34 l = quat::LeftStrain(qa);   // P = l qb
     const Mat34 m = quat::RightStrain(qb);  // P = m qa
     const double c = 2.0 / e.ds;
     const Eigen::Vector3d u = c * (l * qb);
-    const Eigen::Vector3d du = u - state.natural_factor * e.natural;
+    const Eigen::Vector3d du = u - RestCurvature(e, edge_index, state);
     const Eigen::Vector3d mom = e.stiffness * du;  // internal moment, material frame [N m]
     acc->value += 0.5 * e.ds * du.dot(mom);
     const Eigen::Vector4d ga = 2.0 * m.transpose() * mom;  // ds * c = 2

@@ -135,7 +135,10 @@ void ValidateRodSpec(const RodSpec& spec, bool require_support) {
       const double dist = (sp.position - prev.position).norm();
       const double arc = sp.s - prev.s;
       const bool slides = sp.sliding || prev.sliding;
-      if (!slides && dist > arc * (1 + 1e-9)) {
+      // An extensible cable (EA > 0) a little shorter than the span is stretched across it:
+      // solved, and its tension says how taut.
+      const double stretch = spec.material.axial_stiffness > 0 ? kMaxAxialStrain : 1e-9;
+      if (!slides && dist > arc * (1 + stretch)) {
         const auto [dist_text, arc_text] = DistinctNumbers(dist, arc);
         throw InvalidInput("supports " + std::to_string(i - 1) + " and " + std::to_string(i) +
                            " are " + dist_text + " m apart but only " + arc_text +

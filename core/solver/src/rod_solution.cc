@@ -58,7 +58,7 @@ RodSolution ExtractSolution(const RodModel& model, const RodState& state,
     const Eigen::Vector4d& qa = state.q[edge.a];
     const Eigen::Vector4d& qb = state.q[edge.b];
     const Vec3 u = (2.0 / edge.ds) * (internal::quat::LeftStrain(qa) * qb);
-    const Vec3 du = u - state.natural_factor * edge.natural;
+    const Vec3 du = u - internal::RestCurvature(edge, e, state);
     const Vec3 m = edge.stiffness * du;
     elastic += 0.5 * edge.ds * du.dot(m);
     twist += edge.ds * u[2];

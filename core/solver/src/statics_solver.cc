@@ -569,8 +569,22 @@ void EvaluateStability(const RodModel& model, const RodState& state, StaticsSumm
   StabilityAt(model, free, &ev, &kkt_ldlt, summary);
 }
 
+namespace {
+
+// What a continuation ramps from the start state to the full problem.
+enum class Homotopy {
+  kPoses,          // support poses only (or with loads when options.ramp_loads)
+  // Rest curvature from the drawn (start) shape's own to the real one, loads from zero and
+  // support poses from the drawn ones: its t = 0 is solved by the drawing exactly, so the path
+  // starts at an equilibrium instead of asking a straight-rest cable to hold the drawn shape.
+  kDrawnRest,
+};
+
+}  // namespace
+
 StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
-                                const StaticsOptions& options, bool try_direct = true);
+                                const StaticsOptions& options, bool try_direct = true,
+                                Homotopy homotopy = Homotopy::kPoses);
 StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
                                      const StaticsOptions& options);
 
@@ -620,7 +634,24 @@ StaticsSummary SolveStatics(const RodModel& model, RodState* state, const Static
 StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
                                      const StaticsOptions& options) {
   const RodState start = *state;
-  StaticsSummary sum = SolveStaticsFrom(model, state, options);
+  // When the direct solve fails, the path that starts at a solved point goes first: the start
+  // taken as stress-free. The continuations below start from a straight-rest cable held in the
+  // drawn shape, which a coil or a kinked drawing does not reach; they remain as fallbacks.
+  StaticsSummary sum = SolveStaticsFrom(model, state, options, true, Homotopy::kDrawnRest);
+  if (!sum.converged()) {
+    // Its direct solve is the one that just failed (same start, targets and loads; the solve is
+    // deterministic), so only the continuation is run.
+    RodState retry = start;
+    StaticsSummary poses = SolveStaticsFrom(model, &retry, options, /*try_direct=*/false);
+    poses.iterations += sum.iterations;
+    if (poses.converged()) {
+      *state = retry;
+      sum = poses;
+    } else {
+      poses.message = "from the drawn shape as rest shape: " + sum.message + "; " + poses.message;
+      sum = poses;
+    }
+  }
   if (!sum.converged() && !options.ramp_loads) {
     // A start far from any loaded equilibrium (e.g. a default shape under a heavy, anisotropic
     // load): relax it weightless first and bring the loads in by continuation.
@@ -634,6 +665,8 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
     if (second.converged()) {
       *state = retry;
       sum = second;
+    } else {
+      sum.iterations = second.iterations;
     }
   }
   if (!options.escape_unstable || !sum.converged() || sum.stable) return sum;
@@ -659,9 +692,19 @@ StaticsSummary SolveStaticsAndEscape(const RodModel& model, RodState* state,
 }
 
 StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
-                                const StaticsOptions& options, bool try_direct) {
+                                const StaticsOptions& options, bool try_direct,
+                                Homotopy homotopy) {
   const auto t0 = Clock::now();
-  const RodState start = *state;
+  RodState start = *state;
+  const bool drawn_rest = homotopy == Homotopy::kDrawnRest;
+  if (drawn_rest) {
+    // The drawn shape's support poses, whatever targets the state held (the equilibrium at
+    // t = 0 needs the supports where the drawing has them).
+    internal::SetSupportTargets(model, 0.0, start, &start);
+    internal::ApplySupportTargets(model, &start);
+    start.drawn_curvature = internal::DrawnCurvature(model, start);
+  }
+  const bool ramp_loads = options.ramp_loads || drawn_rest;
   StaticsSummary sum;
   int total_iterations = 0;
   if (try_direct) {
@@ -679,6 +722,7 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
   }
   // Continuation from the start state's own poses (and, if asked, from zero load).
   RodState cur = start;
+  std::vector<double> fold_at;
   double t = 0.0, dt = kFirstContinuationStep;
   int steps = 0;
   bool at_start = true;
@@ -691,8 +735,9 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
     const double t_next = at_start ? 0.0 : std::min(1.0, t + dt);
     RodState trial = cur;
     internal::SetSupportTargets(model, t_next, start, &trial);
-    trial.load_factor = options.ramp_loads ? t_next : 1.0;
-    trial.natural_factor = options.ramp_loads ? t_next : 1.0;
+    trial.load_factor = ramp_loads ? t_next : 1.0;
+    trial.natural_factor = ramp_loads ? t_next : 1.0;
+    trial.drawn_factor = drawn_rest ? 1.0 - t_next : 0.0;
     // A step already cut this small sits at a fold of the path (a stretch snapping through, a
     // buckle flipping): closer steps fail the same way, but Newton given room crosses to the
     // state beyond. A 20-segment harness 3 % longer than drawn: 19 of 20 segments failed.
@@ -703,11 +748,16 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
     ++steps;
     ReportProgress(options.progress, t_next, "continuation");
     if (step.converged()) {
+      // A step that converged only once cut below kSnapStep (with the room to snap) crossed a
+      // fold of the path: the state beyond it is on another branch than the drawing's.
+      if (!at_start && dt < kSnapStep) fold_at.push_back(t_next);
       cur = trial;
       t = t_next;
       at_start = false;
       if (t >= 1.0) {
         sum = step;
+        cur.drawn_curvature.clear();
+        cur.drawn_factor = 0.0;
         *state = cur;
         break;
       }
@@ -724,6 +774,14 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
   }
   sum.continuation_steps = steps;
   sum.iterations = total_iterations;
+  sum.folds_passed = static_cast<int>(fold_at.size());
+  if (sum.converged() && (drawn_rest || !fold_at.empty())) {
+    std::ostringstream os;
+    os.precision(3);
+    if (drawn_rest) os << "relaxed from the drawn shape as rest shape";
+    for (double f : fold_at) os << (os.tellp() > 0 ? "; " : "") << "passed a fold at t=" << f;
+    sum.message = os.str();
+  }
   sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
 }

@@ -176,7 +176,9 @@ TEST(RelaxTolerance, ALengthThatMakesAStretchTooShortCannotBeBuiltAndSaysSo) {
   const CableRelaxation nominal = TautThenLooped(options);
   ASSERT_TRUE(nominal.ok());
   ToleranceConfig tc;
-  tc.length = 0.02;  // 2 % shorter: 196 mm of cable from the clamp to the clip 200 mm away
+  // 15 % shorter: 170 mm of cable from the clamp to the clip 200 mm away, a stretch of 18 %,
+  // beyond what a bundle's EA makes up for (a few per cent is stretched across, taut).
+  tc.length = 0.15;
   std::vector<std::string> problems;
   const CableTolerance t = SingleCableTolerance(nominal, tc, options, &problems);
   ASSERT_EQ(t.corners.size(), 2u);

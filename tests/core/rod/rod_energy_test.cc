@@ -4,6 +4,7 @@
 #include <random>
 
 #include "cablefit/core/rod/initial_shape.h"
+#include "cablefit/core/rod/internal/rod_energy.h"
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/solver/internal/kkt_evaluation.h"
 #include "cablefit/core/solver/statics_solver.h"
@@ -12,6 +13,7 @@
 namespace cablefit {
 namespace {
 
+using internal::DrawnCurvature;
 using internal::EvaluateKkt;
 using internal::KktEvaluation;
 using internal::RotateFrames;
@@ -51,21 +53,10 @@ RodSpec RichSpec() {
   return spec;
 }
 
-TEST(RodEnergyTest, GradientAndHessianMatchFiniteDifferences) {
-  const RodSpec spec = RichSpec();
-  Discretisation disc;
-  disc.element_length = 0.05;
-  const RodModel model = CompileRodModel(spec, disc);
-  RodState state = MakeInitialState(model, DefaultInitialCurve(spec));
-  std::mt19937 rng(7);
-  std::normal_distribution<double> nd(0.0, 0.2);
+// The energy's gradient, Hessian and constraint Jacobian at `state` against central differences.
+void ExpectDerivativesMatchFiniteDifferences(const RodModel& model, const RodState& state,
+                                             const Eigen::VectorXd& lambda) {
   const int n3 = 3 * static_cast<int>(model.items.size());
-  Eigen::VectorXd jitter(n3);
-  for (int i = 0; i < n3; ++i) jitter[i] = nd(rng);
-  RotateFrames(model, jitter, &state);
-  Eigen::VectorXd lambda(model.num_constraints);
-  for (int i = 0; i < lambda.size(); ++i) lambda[i] = nd(rng);
-
   const KktEvaluation at = EvaluateKkt(model, state, lambda, true);
   const double h = 1e-6;
   Eigen::VectorXd fd_grad(n3);
@@ -92,6 +83,31 @@ TEST(RodEnergyTest, GradientAndHessianMatchFiniteDifferences) {
   const Eigen::MatrixXd fd_sym = 0.5 * (fd_hess + fd_hess.transpose());
   const double hscale = at.hessian.cwiseAbs().maxCoeff();
   EXPECT_TRUE(testing::MatricesNear(at.hessian, fd_sym, 1e-5 * hscale));
+}
+
+TEST(RodEnergyTest, GradientAndHessianMatchFiniteDifferences) {
+  const RodSpec spec = RichSpec();
+  Discretisation disc;
+  disc.element_length = 0.05;
+  const RodModel model = CompileRodModel(spec, disc);
+  RodState state = MakeInitialState(model, DefaultInitialCurve(spec));
+  std::mt19937 rng(7);
+  std::normal_distribution<double> nd(0.0, 0.2);
+  const int n3 = 3 * static_cast<int>(model.items.size());
+  Eigen::VectorXd jitter(n3);
+  for (int i = 0; i < n3; ++i) jitter[i] = nd(rng);
+  RotateFrames(model, jitter, &state);
+  Eigen::VectorXd lambda(model.num_constraints);
+  for (int i = 0; i < lambda.size(); ++i) lambda[i] = nd(rng);
+  ExpectDerivativesMatchFiniteDifferences(model, state, lambda);
+  // Half-way along the drawn-rest homotopy: rest curvature partly from another (drawn) shape.
+  RodState drawn = state;
+  for (int i = 0; i < n3; ++i) jitter[i] = nd(rng);
+  RotateFrames(model, jitter, &drawn);
+  state.drawn_curvature = DrawnCurvature(model, drawn);
+  state.drawn_factor = 0.6;
+  state.natural_factor = 0.4;
+  ExpectDerivativesMatchFiniteDifferences(model, state, lambda);
 }
 
 }  // namespace

@@ -22,6 +22,9 @@ struct KblSizedHarnessSize {
   /// Per cent of nodes that continue the previous one (a splice); the others branch off an
   /// earlier node with fewer than four segments (a breakout).
   int chain_percent = 10;
+  /// Every segment built this fraction longer (+) or shorter (-) than drawn, as harness.json's
+  /// "length": "+2%": the supports keep their drawn positions, their arc lengths scale.
+  double length_change = 0.0;
 };
 
 /// A harness the size of the largest real KBL harness the issue names (183 segments, 184 nodes,

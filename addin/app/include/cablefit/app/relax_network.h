@@ -93,10 +93,15 @@ std::vector<OrientedBox> SolidBoxes(const HarnessDrawing& drawing);
 /// One group relaxed, the way `cablefit relax` and the CAD add-in both do it: the network solve
 /// or the single-rod one. On failure `problem` is one line (exception or non-convergence) and
 /// `cables` must not be used; `network` is the group's JSON (null for a single rod).
+/// A network that does not converge as one is not a failure of all its cables: each is then
+/// relaxed on its own, its junction ends held where the drawing has them (with a note saying
+/// so); `cables` holds those that converged and `cable_problems` (cable index, one line) the
+/// others, while `problem` stays empty.
 struct GroupOutcome {
   std::vector<CableRelaxation> cables;
   json::Json network;
   std::string problem;
+  std::vector<std::pair<int, std::string>> cable_problems;
 };
 GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& group,
                               const std::vector<OrientedBox>& boxes, const HarnessConfig& config,

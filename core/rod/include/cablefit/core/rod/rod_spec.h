@@ -61,6 +61,11 @@ struct MaterialSpec {
   double axial_stiffness = 0.0;
 };
 
+/// The largest stretch (strain) an extensible cable may need to reach its supports: beyond it the
+/// linear law T = EA strain the solver uses no longer describes a cable (insulation and copper
+/// yield long before), so a cable cut that much shorter than its span is a length error.
+constexpr double kMaxAxialStrain = 0.1;
+
 /// A sleeve over part of the cable: a protection of a harness segment (tape, corrugated tube,
 /// heat-shrink, a hose over a bundle), or anything else that adds stiffness and weight to the
 /// cable over [s_begin, s_end] only. Its bending and torsional stiffness act in parallel with the

@@ -21,6 +21,11 @@ struct RodState {
   std::vector<Eigen::Vector4d> support_q;    // frame targets as quaternions
   double load_factor = 1.0;
   double natural_factor = 1.0;
+  // Rest curvature taken from a drawn shape (per edge, material frame [1/m]; empty = none),
+  // added to the natural one with drawn_factor: at drawn_factor = 1 and natural_factor = 0 the
+  // drawn shape is in equilibrium at zero load, the solved start of the drawn-rest homotopy.
+  std::vector<Eigen::Vector3d> drawn_curvature;
+  double drawn_factor = 0.0;
 
   /// Node positions (3 x (n+1)) [m] from the frames, anchored at the anchor support.
   Eigen::Matrix3Xd NodePositions(const RodModel& model) const;

@@ -52,6 +52,9 @@ struct StaticsSummary {
   int iterations = 0;             // Newton iterations in total
   int continuation_steps = 0;     // 0 when the direct solve converged
   int second_order_corrections = 0;  // full steps taken with a second-order correction
+  /// Folds of the continuation path crossed by snapping (the message says at which t): the
+  /// result is on another branch than the drawing's, a state the cable jumps to.
+  int folds_passed = 0;
   double initial_energy = 0.0;    // [J]
   double final_energy = 0.0;      // [J]
   double gradient_norm = 0.0;     // [N m] final max-norm of the Lagrangian gradient
@@ -70,8 +73,10 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
                                   const StaticsOptions& options);
 
 /// Full solve: sets the targets to the model's supports and full loads; tries a direct Newton
-/// solve from `state`, and on failure continues from the state's own support poses (the shape it
-/// starts from) to the model's, halving the step on failure.
+/// solve from `state`; on failure it follows a homotopy from `state` taken as stress-free (its own
+/// curvature as rest curvature, its own support poses, no load: solved exactly there) to the real
+/// rest curvature, support poses and loads; then continuation in the poses with loads ramped. A
+/// continuation halves its step on failure and reports the folds it snapped through.
 StaticsSummary SolveStatics(const RodModel& model, RodState* state, const StaticsOptions& options);
 
 /// Stability verdict and inertia at the state (the solver calls it at convergence).

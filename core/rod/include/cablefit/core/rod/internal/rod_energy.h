@@ -31,8 +31,14 @@ struct EnergyAccumulator {
 
 /// Bending and twist: sum over edges of ds/2 (u - u0)^T K (u - u0).
 void AddBendingEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc);
-/// One edge's share of it (e.g. the moment one branch exerts on a junction).
-void AddEdgeBendingEnergy(const RodEdge& edge, const RodState& state, EnergyAccumulator* acc);
+/// One edge's share of it (e.g. the moment one branch exerts on a junction); `edge_index` is
+/// its index in model.edges (it selects the edge's drawn rest curvature).
+void AddEdgeBendingEnergy(const RodEdge& edge, int edge_index, const RodState& state,
+                          EnergyAccumulator* acc);
+/// The rest Darboux vector u0 of an edge in `state` (natural and drawn parts with their factors).
+Vec3 RestCurvature(const RodEdge& edge, int edge_index, const RodState& state);
+/// The Darboux vector of every edge in `state`: as rest curvature, it makes that shape stress-free.
+std::vector<Eigen::Vector3d> DrawnCurvature(const RodModel& model, const RodState& state);
 
 /// Gravity and dead point loads (linear in the element tangents).
 void AddLoadEnergy(const RodModel& model, const RodState& state, EnergyAccumulator* acc);
