@@ -52,16 +52,18 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
   // elsewhere (20 noise sigmas: far beyond the recording's scatter).
   out.bases = {base};
   out.starts = {NominalStart::kRecordedShape};
-  // The coarse twin of each equilibrium, solved from the fine one's shape.
-  auto add_coarse = [&](const Polyline& shape) {
+  // The coarse twin of each equilibrium, solved from the fine one's shape; the fine one itself
+  // where the coarse level alone does not settle there.
+  auto add_coarse = [&](const Polyline& shape, const RodSimulator& fine) {
     RodSimulator coarse(ScreenSimulationOptions(nominal));
+    bool settled = false;
     try {
-      coarse.Simulate(nominal, &shape);
+      settled = coarse.Simulate(nominal, &shape).converged;
     } catch (const InvalidInput&) {
     }
-    out.coarse.push_back(coarse);
+    out.coarse.push_back(settled ? coarse : fine);
   };
-  add_coarse(nominal_fit_solution.solution.centerline);
+  add_coarse(nominal_fit_solution.solution.centerline, base);
   std::vector<Polyline> shapes{nominal_fit_solution.solution.centerline};
   const Eigen::VectorXd at = UniformArcLengths(L, 101);
   const double noise_sigma = recording.observation.noise_sigma;
@@ -81,7 +83,7 @@ NominalBranches SolveNominalBranches(const RodSpec& nominal, const PreparedRecor
     shapes.push_back(r.solution.centerline);
     out.bases.push_back(sim);
     out.starts.push_back(how);
-    add_coarse(r.solution.centerline);
+    add_coarse(r.solution.centerline, sim);
   };
   try_branch(nullptr, NominalStart::kSolverStart);
   if (nominal.supports.size() > 1) {

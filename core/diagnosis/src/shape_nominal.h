@@ -17,7 +17,8 @@ struct NominalBranches {
   /// leads to.
   std::vector<RodSimulator> bases;
   /// The same equilibria on the coarse level alone (no extrapolation): a screening's forward
-  /// model, about three times cheaper a solve, for ranking candidates that the fine one settles.
+  /// model, about three times cheaper a solve, for ranking candidates that the fine one settles
+  /// (the fine simulator where the coarse level alone does not settle).
   std::vector<RodSimulator> coarse;
   std::vector<NominalStart> starts;     // how each was reached
   std::vector<double> reaction_moment;  // [N m] moment magnitude at every support (first)
