@@ -278,6 +278,7 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   const bool converged = sim.converged;
   const double error = sim.estimated_error;
   GroupRelaxation out;
+  const auto measured = std::chrono::steady_clock::now();
   for (int b = 0; b < nb; ++b) {
     CableRelaxation r;
     r.setup = setups[b];
@@ -291,6 +292,9 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
     out.cables.push_back(std::move(r));
   }
   SplitSpringbackAndSag(spec, opt, fine, &out);
+  const double measure_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - measured).count();
+  for (CableRelaxation& r : out.cables) r.measure_seconds = measure_seconds;
   // Contact is held at nodes: over a sharp edge the stretch between two nodes can cut the
   // corner. Said on every cable in contact rather than hidden in max_penetration.
   if (fine.max_penetration > 0.01 * min_d) {
@@ -398,6 +402,7 @@ void RelaxCablesOneByOne(const HarnessDrawing& drawing, const RelaxGroup& group,
       CableSetup setup = SetUpCable(drawing, c, boxes, config);
       setup.notes.push_back(note);
       CableRelaxation r = RelaxCable(std::move(setup), options, config.min_bend_radius_factor);
+      out->measure_seconds += r.measure_seconds;
       if (r.result.converged) {
         out->cables.push_back(std::move(r));
       } else {
@@ -434,6 +439,7 @@ GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& g
       }
       out.cables = std::move(g.cables);
       out.network = std::move(g.json);
+      if (!out.cables.empty()) out.measure_seconds = out.cables.front().measure_seconds;
       for (const CableRelaxation& r : out.cables) {
         if (r.result.converged) continue;
         RelaxCablesOneByOne(drawing, group, boxes, config, options,
@@ -443,6 +449,7 @@ GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& g
     } else {
       CableSetup setup = SetUpCable(drawing, group.cables.front(), boxes, config);
       out.cables.push_back(RelaxCable(std::move(setup), options, config.min_bend_radius_factor));
+      out.measure_seconds = out.cables.back().measure_seconds;
     }
     for (const CableRelaxation& r : out.cables)
       if (!r.result.converged && out.problem.empty())

@@ -10,7 +10,7 @@
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/app/solution_json.h"
 #include "cablefit/app/provenance.h"
-#include "output_folder.h"
+#include "cablefit/app/output/output_folder.h"
 #include "terminal_text.h"
 
 namespace cablefit::addin {

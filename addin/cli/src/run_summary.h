@@ -1,5 +1,5 @@
 // What the batch commands (relax, diagnose) say at the end of a run, the same way for both:
-// the failures again, one `cablefit: <file>: <problem>` line each, and the --summary-json file.
+// the failures again, one `cablefit: <file>: <problem>` line each.
 #pragma once
 
 #include <string>
@@ -11,9 +11,5 @@ namespace cablefit::addin {
 /// "cablefit: <file>: <problem>" on the standard error; nothing when `failures` is empty.
 /// `failures` are "<file>: <problem>" lines.
 void PrintFailureList(const std::string& command, const std::vector<std::string>& failures);
-
-/// Throws InvalidInput before any work when --summary-json `path` cannot be the run summary:
-/// empty, an existing folder, or one of `inputs`.
-void CheckSummaryJsonPath(const std::string& path, const std::vector<std::string>& inputs);
 
 }  // namespace cablefit::addin

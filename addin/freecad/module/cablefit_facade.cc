@@ -1,9 +1,7 @@
-// The facade over addin/app: the same read -> group -> relax -> clearances -> motion -> write
-// sequence as command_relax.cc (one input, groups in order, no worker pool: FreeCAD calls it from
-// its GUI thread and shows the progress), and DiagnoseCase + the CLI's per-case writers.
+// The facade over addin/app: the relax pipeline's stages (one input, groups in order, no worker
+// pool: FreeCAD calls it from its GUI thread and shows the progress), and DiagnoseCase + the
+// CLI's per-case writers.
 #include "cablefit_facade.h"
-
-#include "cablefit/app/kbl_input.h"
 
 #include <chrono>
 #include <exception>
@@ -13,16 +11,12 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/colour_map.h"
 #include "cablefit/app/diagnose_case.h"
-#include "cablefit/app/diagnose_output.h"
-#include "cablefit/app/cable_selection.h"
+#include "cablefit/app/pipeline/diagnose_pipeline.h"
 #include "cablefit/app/harness_config.h"
-#include "cablefit/app/relax_cable.h"
+#include "cablefit/app/pipeline/relax_pipeline.h"
 #include "cablefit/app/relax_file.h"
 #include "cablefit/app/relax_motion.h"
-#include "cablefit/app/batch_pool.h"
-#include "cablefit/app/relax_network.h"
 #include "cablefit/app/relax_report.h"
-#include "cablefit/app/report_case.h"
 
 namespace cablefit::freecad {
 
@@ -132,37 +126,23 @@ MotionSummary SummariseMotion(const addin::FileMotion& m) {
 HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::string& config_path,
                                          double accuracy, const std::string& mesh_unit,
                                          double timeout, const ProgressCallback& progress) {
-  auto state = std::make_shared<RelaxedFile>();
-  addin::HarnessConfig& config = state->config;
-  if (!config_path.empty()) config = addin::ReadHarnessConfig(config_path);
-  SimulationOptions options;
-  const bool kbl = addin::IsKblInput(input);
-  if (!(accuracy <= 0)) options.accuracy = accuracy;  // NaN too: IsValid rejects it
-  else if (kbl) options.accuracy = addin::kKblAccuracy;
-  std::string why;
-  if (!options.IsValid(&why)) throw InvalidInput("accuracy: " + why);
-
-  addin::RelaxedFile& f = state->file;
-  f.input = input;
-  f.stem = fs::path(input).stem().string();
+  // The relax pipeline's stages one by one, in order on this (FreeCAD's GUI) thread, so that the
+  // progress can be told per group and a cancel stops between groups. Tolerances are left to the
+  // command line: the workbench has no view of them.
+  addin::RelaxOptions options;
+  options.config_path = config_path;
+  options.accuracy = accuracy;  // <= 0: the input's default
+  options.mesh_unit = mesh_unit;
+  options.timeout = timeout;
+  options.jobs = 1;
+  options.tolerance = false;
+  addin::RelaxPipeline pipeline(options);
+  const int i = pipeline.AddInput(input, fs::path(input).stem().string());
   // A cancel while reading takes effect once the drawing is read (its cables are listed, each
   // failing with "cancelled"): reading itself checks the cancellation scope.
   const bool cancel_at_read =
       progress && !progress(0.0, "read " + fs::path(input).filename().string());
-  auto t0 = Clock::now();
-  if (kbl) {
-    // As the command line: the file's own physics per segment, the user's harness.json over it.
-    addin::KblInput kbl = addin::ReadKblInput(input, config);
-    f.drawing = std::move(kbl.drawing);
-    config = std::move(kbl.config);
-    f.cable_json = std::move(kbl.cable_json);
-    f.notes = std::move(kbl.notes);
-  } else {
-    f.drawing = addin::ReadHarnessInput(input, addin::UnitInMetres(mesh_unit));
-  }
-  addin::ApplyCableSelection(config, &f.drawing);
-  f.read_ok = true;
-  f.times.read = Since(t0);
+  pipeline.ReadInput(i);
   // One cancellation scope for the solves: a progress call returning false trips it (here or in
   // the solver's continuation steps), and every group after that fails with "cancelled".
   const CancellationScope run;
@@ -170,69 +150,50 @@ HarnessRelaxation HarnessRelaxation::Run(const std::string& input, const std::st
   auto report = [&](double fraction, const std::string& stage) {
     if (progress && !progress(fraction, stage)) RequestCancellation();
   };
-  const size_t n = f.drawing.cables.size();
-  f.cables.resize(n);
-  f.cable_errors.resize(n);
-
-  const std::vector<addin::OrientedBox> boxes = addin::SolidBoxes(f.drawing);
-  // The CLI's groups: a single cable, or cables solved together as one network (joined at
-  // breakouts, or with contact against nearby solids).
-  const std::vector<addin::RelaxGroup> groups = addin::GroupCables(f.drawing, boxes, config);
-  const double ng = static_cast<double>(groups.size());
+  const addin::HarnessConfig config = pipeline.ConfigFor(i);
+  addin::RelaxedFile& f = pipeline.files()[static_cast<size_t>(i)];
+  std::vector<addin::RelaxJob> jobs = pipeline.GroupInput(i);
+  const double ng = static_cast<double>(jobs.size());
   // A motion gets the last part of the bar: its poses are solves of their own.
   const double relax_share = config.motion ? 0.8 : 1.0;
-  for (size_t g = 0; g < groups.size(); ++g) {
-    const addin::RelaxGroup& group = groups[g];
-    const std::string label = addin::GroupLabel(f.drawing, group);
+  SimulationOptions simulation = pipeline.SimulationOptionsFor(i);
+  for (size_t g = 0; g < jobs.size(); ++g) {
+    const std::string label = addin::GroupLabel(f.drawing, jobs[g].group);
     // Continuation steps report inside the group's share of the bar.
-    options.statics.progress = [&](double fraction, const std::string& stage) {
+    simulation.statics.progress = [&](double fraction, const std::string& stage) {
       return !progress ||
              progress(relax_share * (g + 0.1 + 0.8 * fraction) / ng, label + ": " + stage);
     };
     if (!CancellationRequested()) report(relax_share * (g + 0.05) / ng, "relax " + label);
-    std::string problem;
-    std::vector<addin::CableRelaxation> done;
-    t0 = Clock::now();
-    if (!CancellationRequested()) {
-      const CancellationScope item(timeout);  // the solvers check it
-      addin::GroupOutcome r = addin::RelaxGroupCables(f.drawing, group, boxes, config, options);
-      problem = r.problem;
-      done = std::move(r.cables);
-      for (const auto& [c, why] : r.cable_problems) f.cable_errors[static_cast<size_t>(c)] = why;
-      if (!r.network.is_null()) f.networks.push_back(std::move(r.network));
-    }
-    if (CancellationRequested()) problem = "cancelled";
-    if (problem.empty()) {
-      for (addin::CableRelaxation& r : done) {
-        const size_t c = static_cast<size_t>(r.setup.cable);
-        f.cables[c] = std::move(r);
-      }
-    } else {
-      for (int c : group.cables) f.cable_errors[static_cast<size_t>(c)] = problem;
-    }
-    f.times.relax += Since(t0);
+    pipeline.RelaxGroupOf(&jobs[g], simulation, static_cast<int>(g));
   }
+  pipeline.CollectJobs(&jobs);
   // Then what the command line does per file once its cables are relaxed: clearances and the
   // motion, with the same options (the groups' progress callback refers to this loop's state).
-  options.statics.progress = {};
+  simulation.statics.progress = {};
   if (!CancellationRequested()) {
-    addin::MeasureFileClearances(config, &f);
+    pipeline.MeasureClearance(i);
     if (config.motion) {
       const std::string label = "motion '" + config.motion->name + "'";
       report(relax_share, label);
-      options.statics.progress = [&](double, const std::string& stage) {
+      simulation.statics.progress = [&](double, const std::string& stage) {
         // A sweep does not say how far it is: the bar stays in the motion's part.
         return !progress || progress(relax_share + 0.5 * (1 - relax_share), label + ": " + stage);
       };
-      addin::RunFileMotion(config, options, &f);
+      pipeline.SweepMotion(i, simulation);
     }
   }
   if (progress) progress(1.0, CancellationRequested() ? "cancelled" : "relaxed");
 
+  auto state = std::make_shared<RelaxedFile>();
+  state->file = std::move(f);
+  state->config = config;
   HarnessRelaxation out;
   out.file_ = state;
-  for (size_t i = 0; i < n; ++i) out.cables_.push_back(Summarise(f, config, static_cast<int>(i)));
-  if (f.motion) out.motion_ = SummariseMotion(*f.motion);
+  const size_t n = state->file.drawing.cables.size();
+  for (size_t c = 0; c < n; ++c)
+    out.cables_.push_back(Summarise(state->file, state->config, static_cast<int>(c)));
+  if (state->file.motion) out.motion_ = SummariseMotion(*state->file.motion);
   return out;
 }
 
@@ -337,8 +298,8 @@ std::array<double, 3> DeviationColour(double value, double lo, double hi) {
 
 DiagnosisSummary DiagnoseRecording(const std::string& case_file, const std::string& report_dir,
                                    const ProgressCallback& progress) {
-  addin::DiagnoseCaseOptions options;
-  const addin::DiagnosedCase d = addin::DiagnoseCase(case_file, options, progress);
+  const addin::DiagnosedCase d = addin::DiagnosePipeline::DiagnoseAndWrite(
+      case_file, addin::DiagnoseCaseOptions(), report_dir, progress);
   DiagnosisSummary s;
   s.name = d.recording.name;
   s.kind = addin::ToString(d.kind);
@@ -361,11 +322,7 @@ DiagnosisSummary DiagnoseRecording(const std::string& case_file, const std::stri
   }
   s.notes = d.notes;
   s.seconds = d.seconds;
-  if (!report_dir.empty()) {
-    addin::WriteDiagnosisFiles(report_dir, d);
-    addin::WriteCaseReport(report_dir, d);
-    s.report = (fs::path(report_dir) / "report.html").string();
-  }
+  if (!report_dir.empty()) s.report = (fs::path(report_dir) / "report.html").string();
   return s;
 }
 

@@ -118,6 +118,9 @@ struct CableRelaxation {
   std::optional<double> springback_max, sag_max;
   std::string split_note;
   double seconds = 0.0;
+  /// [s] of `seconds`: measuring the solved shape (deviation, bend, tension) and the
+  /// springback/sag split; shared by the cables of a network, measured together.
+  double measure_seconds = 0.0;
   bool ok() const { return result.converged; }
 };
 

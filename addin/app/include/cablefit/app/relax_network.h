@@ -102,6 +102,7 @@ struct GroupOutcome {
   json::Json network;
   std::string problem;
   std::vector<std::pair<int, std::string>> cable_problems;
+  double measure_seconds = 0.0;  ///< [s] spent measuring the solved cables (of the whole solve)
 };
 GroupOutcome RelaxGroupCables(const HarnessDrawing& drawing, const RelaxGroup& group,
                               const std::vector<OrientedBox>& boxes, const HarnessConfig& config,

@@ -29,6 +29,10 @@ std::string SafeFileName(const std::string& name, const std::string& fallback);
 std::vector<std::string> UniqueNames(const std::vector<std::string>& names,
                                      const std::vector<std::string>& reserved);
 
+/// Throws InvalidInput before any work when --summary-json `path` cannot be the run summary:
+/// empty, an existing folder, or one of `inputs`.
+void CheckSummaryJsonPath(const std::string& path, const std::vector<std::string>& inputs);
+
 class OutputFolder {
  public:
   /// Throws InvalidInput ("--out ...: <why>") when `out` is empty, is an existing non-folder, or

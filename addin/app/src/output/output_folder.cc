@@ -1,4 +1,4 @@
-#include "output_folder.h"
+#include "cablefit/app/output/output_folder.h"
 
 #include <algorithm>
 #include <cctype>
@@ -98,6 +98,18 @@ void OutputFolder::CheckFolder(const fs::path& output) const {
                          " is the input folder " + holder.string() +
                          "; write the results to another folder");
     }
+  }
+}
+
+void CheckSummaryJsonPath(const std::string& path, const std::vector<std::string>& inputs) {
+  if (path.empty()) throw InvalidInput("--summary-json: the file name is empty");
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw InvalidInput("--summary-json " + path + ": is a folder; name a file");
+  for (const std::string& in : inputs) {
+    if (fs::equivalent(in, path, ec) && !ec)
+      throw InvalidInput("--summary-json " + path + ": is the input " + in +
+                         "; write the summary to another file");
   }
 }
 
