@@ -1,7 +1,7 @@
 // libFuzzer target: harness.json (relax sidecar) through ReadHarnessConfig. The sample section
 // (on a coarse grid) and its library sit next to it, so material.section references are read.
 #include "fuzz_support.h"
-#include "cablefit/app/harness_config.h"
+#include "cablefit/app/config/harness_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool once = [] {

@@ -1,7 +1,7 @@
 // libFuzzer target: SECTION.json through ReadSectionFile. The sample material library sits at
 // ../automotive.json, where the sample section files look for it.
 #include "fuzz_support.h"
-#include "cablefit/app/section_json.h"
+#include "cablefit/app/config/section_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const bool once = [] {

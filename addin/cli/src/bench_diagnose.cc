@@ -11,9 +11,9 @@
 #include <thread>
 #include <vector>
 
-#include "cablefit/app/diagnose_case.h"
-#include "cablefit/app/diagnose_output.h"
-#include "cablefit/app/report_case.h"
+#include "cablefit/app/diagnose/diagnose_case.h"
+#include "cablefit/app/diagnose/diagnose_output.h"
+#include "cablefit/app/report/report_case.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/cli/commands.h"
 #include "cablefit/formats/case_reader.h"

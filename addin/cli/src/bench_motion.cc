@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
-#include "cablefit/app/bench_harness.h"
-#include "cablefit/app/relax_network.h"
+#include "cablefit/app/bench/bench_harness.h"
+#include "cablefit/app/relax/relax_network.h"
 #include "cablefit/core/network/network_sweep.h"
 #include "cablefit/core/solver/motion_sweep.h"
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cablefit/cli/commands.h"
-#include "cablefit/app/bench_harness.h"
-#include "cablefit/app/relax_network.h"
+#include "cablefit/app/bench/bench_harness.h"
+#include "cablefit/app/relax/relax_network.h"
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/solver/rod_simulation.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cablefit/app/pipeline/diagnose_pipeline.h"
-#include "cablefit/app/report_html.h"
+#include "cablefit/app/base/report_html.h"
 #include "cablefit/cli/commands.h"
 #include "option_checks.h"
 #include "run_printer.h"

@@ -5,7 +5,7 @@
 #include <exception>
 #include <string>
 
-#include "cablefit/app/provenance.h"
+#include "cablefit/app/base/provenance.h"
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"

@@ -12,8 +12,8 @@
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/json_util.h"
-#include "cablefit/app/provenance.h"
-#include "cablefit/app/section_json.h"
+#include "cablefit/app/base/provenance.h"
+#include "cablefit/app/config/section_json.h"
 
 namespace cablefit::addin {
 namespace {

@@ -8,8 +8,8 @@
 #include "cablefit/core/solver/rod_simulation.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
-#include "cablefit/app/solution_json.h"
-#include "cablefit/app/provenance.h"
+#include "cablefit/app/output/solution_json.h"
+#include "cablefit/app/base/provenance.h"
 #include "cablefit/app/output/output_folder.h"
 #include "terminal_text.h"
 

@@ -10,13 +10,13 @@
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/colour_map.h"
-#include "cablefit/app/diagnose_case.h"
+#include "cablefit/app/diagnose/diagnose_case.h"
 #include "cablefit/app/pipeline/diagnose_pipeline.h"
-#include "cablefit/app/harness_config.h"
+#include "cablefit/app/config/harness_config.h"
 #include "cablefit/app/pipeline/relax_pipeline.h"
-#include "cablefit/app/relax_file.h"
-#include "cablefit/app/relax_motion.h"
-#include "cablefit/app/relax_report.h"
+#include "cablefit/app/output/relax_file.h"
+#include "cablefit/app/motion/relax_motion.h"
+#include "cablefit/app/report/relax_report.h"
 
 namespace cablefit::freecad {
 

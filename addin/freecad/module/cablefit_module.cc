@@ -60,6 +60,7 @@ class PythonProgress {
 
 }  // namespace
 
+// The whole Python API in one place, as pybind11 declares it: a list of bindings, not logic.
 PYBIND11_MODULE(cablefit_native, m) {
   m.doc() = "cablefit relax and diagnose for the FreeCAD workbench (lengths in metres)";
   static py::exception<cablefit::InvalidInput> error(m, "Error", PyExc_ValueError);

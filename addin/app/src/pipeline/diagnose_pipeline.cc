@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <thread>
 
-#include "cablefit/app/batch_pool.h"
-#include "cablefit/app/diagnose_output.h"
+#include "cablefit/app/base/batch_pool.h"
+#include "cablefit/app/diagnose/diagnose_output.h"
 #include "cablefit/app/output/output_folder.h"
-#include "cablefit/app/provenance.h"
-#include "cablefit/app/report_case.h"
-#include "cablefit/app/report_html.h"
+#include "cablefit/app/base/provenance.h"
+#include "cablefit/app/report/report_case.h"
+#include "cablefit/app/base/report_html.h"
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/case_reader.h"

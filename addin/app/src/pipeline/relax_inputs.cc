@@ -4,9 +4,8 @@
 #include <filesystem>
 #include <set>
 
-#include "cablefit/app/kbl_input.h"
+#include "cablefit/app/input/input_kind.h"
 #include "cablefit/app/output/output_folder.h"
-#include "cablefit/app/relax_file.h"
 #include "cablefit/formats/input_file.h"
 
 namespace cablefit::addin {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cablefit/app/relax_file.h"
+#include "cablefit/app/output/relax_file.h"
 
 namespace cablefit::addin {
 

@@ -6,12 +6,14 @@
 #include <thread>
 #include <tuple>
 
-#include "cablefit/app/batch_pool.h"
-#include "cablefit/app/cable_selection.h"
-#include "cablefit/app/kbl_input.h"
+#include "cablefit/app/base/batch_pool.h"
+#include "cablefit/app/config/cable_selection.h"
+#include "cablefit/app/input/harness_input.h"
+#include "cablefit/app/input/kbl_input.h"
 #include "cablefit/app/output/output_folder.h"
-#include "cablefit/app/relax_motion_pictures.h"
-#include "cablefit/app/relax_report.h"
+#include "cablefit/app/output/relax_envelope.h"
+#include "cablefit/app/output/relax_motion_pictures.h"
+#include "cablefit/app/report/relax_report.h"
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
@@ -175,7 +177,7 @@ void RelaxPipeline::CollectJobs(std::vector<RelaxJob>* jobs) {
 void RelaxPipeline::MeasureClearance(int i) {
   const auto t0 = Clock::now();
   RelaxedFile& f = files_[static_cast<size_t>(i)];
-  MeasureFileClearances(ConfigFor(i), &f);
+  f.clearances = MeasureHarnessClearances(ConfigFor(i), f);
   for (const ClearancePair& p : f.clearances)
     if (p.violation()) Say(RunMessage::kResult, f.stem + ": CLEARANCE: " + ClearanceViolationText(p));
   seconds_.clearance += Since(t0);
@@ -184,7 +186,7 @@ void RelaxPipeline::MeasureClearance(int i) {
 void RelaxPipeline::SweepMotion(int i, const SimulationOptions& options) {
   const auto t0 = Clock::now();
   RelaxedFile& f = files_[static_cast<size_t>(i)];
-  RunFileMotion(ConfigFor(i), options, &f);  // does nothing without a harness.json motion
+  f.motion = SweepHarnessMotion(ConfigFor(i), options, f);  // unset without a motion
   if (f.motion)
     for (const std::string& line : MotionLines(*f.motion)) Say(RunMessage::kResult, f.stem + ": " + line);
   seconds_.motion += Since(t0);
@@ -195,7 +197,8 @@ void RelaxPipeline::VaryTolerances(int i) {
   const auto t0 = Clock::now();
   RelaxedFile& f = files_[static_cast<size_t>(i)];
   // One input at a time, its set-ups on every worker.
-  RunFileTolerance(ConfigFor(i), SimulationOptionsFor(i), &f, ResolveJobs(options_.jobs, 1 << 20));
+  f.tolerance = VaryHarnessTolerances(ConfigFor(i), SimulationOptionsFor(i), f,
+                                      ResolveJobs(options_.jobs, 1 << 20));
   if (f.tolerance)
     for (const std::string& line : ToleranceLines(*f.tolerance)) Say(RunMessage::kResult, f.stem + ": " + line);
   seconds_.tolerance += Since(t0);

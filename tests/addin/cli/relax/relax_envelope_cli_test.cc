@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cablefit/app/swept_envelope.h"
+#include "cablefit/app/output/swept_envelope.h"
 #include "cablefit/formats/cad_file.h"
 #include "cablefit/formats/json_util.h"
 #include "cablefit/formats/stl_file.h"

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/app/diagnose_case.h"
+#include "cablefit/app/diagnose/diagnose_case.h"
 #include "cablefit/app/pipeline/run_observer.h"
-#include "cablefit/app/report_summary.h"
+#include "cablefit/app/report/report_summary.h"
 
 namespace cablefit::addin {
 

@@ -13,11 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "cablefit/app/harness_config.h"
+#include "cablefit/app/config/harness_config.h"
 #include "cablefit/app/pipeline/run_observer.h"
-#include "cablefit/app/relax_file.h"
-#include "cablefit/app/relax_network.h"
-#include "cablefit/app/relax_summary.h"
+#include "cablefit/app/pipeline/stage_seconds.h"
+#include "cablefit/app/output/relax_file.h"
+#include "cablefit/app/relax/relax_network.h"
+#include "cablefit/app/report/relax_summary.h"
 #include "cablefit/core/solver/rod_simulation.h"
 
 namespace cablefit::addin {
@@ -36,20 +37,6 @@ struct RelaxOptions {
   bool tolerance = true;    ///< run harness.json's tolerances (the FreeCAD module does not)
   std::string summary_json;  ///< also write the run summary as JSON here, empty = none
 };
-
-/// Wall time per stage [s]. Stages that run per input in parallel (read, relax, measure, JSON,
-/// STEP, pictures) are summed over inputs and groups, so with several workers they can add up to
-/// more than `total`.
-struct RelaxStageSeconds {
-  double read = 0, relax = 0, measure = 0;  ///< measure: deviations and the springback/sag split
-  double clearance = 0, motion = 0, tolerance = 0;
-  double json = 0, step = 0, pictures = 0, report = 0;
-  double total = 0;
-};
-
-/// "seconds per stage: read 0.12, relax 1.31, ..., report 0.04; total 2.10".
-std::string StageSecondsLine(const RelaxStageSeconds& s);
-json::Json StageSecondsJson(const RelaxStageSeconds& s);
 
 struct RelaxSummary {
   RelaxCounts counts;

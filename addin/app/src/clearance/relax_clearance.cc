@@ -1,0 +1,132 @@
+#include "cablefit/app/clearance/relax_clearance.h"
+
+#include <algorithm>
+#include <cstdio>
+
+
+namespace cablefit::addin {
+
+namespace {
+
+// The arc length to leave out at each end of `a` for its pair with `b`: near an end that meets
+// one of b's ends (a junction or splice).
+TubeSkip JunctionSkip(const ClearanceCable& a, const ClearanceCable& b) {
+  TubeSkip skip;
+  const Polyline& pa = *a.centreline;
+  const Polyline& pb = *b.centreline;
+  const double touch = a.radius + b.radius, length = kJunctionSkipFactor * touch;
+  const Vec3 b0 = pb.points.col(0), b1 = pb.points.col(pb.size() - 1);
+  auto meets = [&](const Vec3& p) { return (p - b0).norm() <= touch || (p - b1).norm() <= touch; };
+  if (meets(pa.points.col(0))) skip.start = length;
+  if (meets(pa.points.col(pa.size() - 1))) skip.end = length;
+  return skip;
+}
+
+}  // namespace
+
+std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& cables,
+                                             const std::vector<ClearanceSolid>& solids) {
+  std::vector<ClearancePair> pairs;
+  for (size_t i = 0; i < cables.size(); ++i) {
+    const ClearanceCable& c = cables[i];
+    if (c.centreline == nullptr || c.centreline->size() < 2) continue;
+    for (const ClearanceSolid& s : solids) {
+      if (s.geometry == nullptr || s.geometry->empty()) continue;
+      ClearancePair p;
+      p.cable = c.name;
+      p.other = s.name;
+      p.hit = s.geometry->ToTube(*c.centreline, c.radius);
+      p.required = std::max(c.min_clearance, s.min_clearance);
+      p.rests_on =
+          std::find(c.clipped_to.begin(), c.clipped_to.end(), s.name) != c.clipped_to.end() ||
+          p.hit.clearance <= kRestingFraction * c.radius;
+      pairs.push_back(p);
+    }
+    for (size_t j = i + 1; j < cables.size(); ++j) {
+      const ClearanceCable& d = cables[j];
+      if (d.centreline == nullptr || d.centreline->size() < 2) continue;
+      ClearancePair p;
+      p.cable = c.name;
+      p.other = d.name;
+      p.other_is_solid = false;
+      p.hit = TubeToTubeClearance(*c.centreline, c.radius, JunctionSkip(c, d), *d.centreline,
+                                  d.radius, JunctionSkip(d, c));
+      p.required = std::max(c.min_clearance, d.min_clearance);
+      if (p.hit.found()) pairs.push_back(p);
+    }
+  }
+  return pairs;
+}
+
+json::Json ClearancePairToJson(const ClearancePair& p) {
+  json::Json j = {{"cable", p.cable},
+                  {p.other_is_solid ? "solid" : "other_cable", p.other},
+                  {"clearance", json::NumberOrNull(p.hit.clearance)},
+                  {"s", p.hit.s},
+                  {"point", json::ToJson(p.hit.point)},
+                  {"nearest_point", json::ToJson(p.hit.other)},
+                  {"required", p.required},
+                  {"violation", p.violation()}};
+  if (p.other_is_solid) j["rests_on"] = p.rests_on;
+  if (!p.other_is_solid) j["other_s"] = p.hit.other_s;
+  return j;
+}
+
+std::string ClearanceViolationText(const ClearancePair& p) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s to %s '%s': %.1f mm, less than the %.1f mm asked, at s=%.0f mm (%.1f, %.1f, "
+                "%.1f) mm",
+                p.cable.c_str(), p.other_is_solid ? "solid" : "cable", p.other.c_str(),
+                1e3 * p.hit.clearance, 1e3 * p.required, 1e3 * p.hit.s, 1e3 * p.hit.point.x(),
+                1e3 * p.hit.point.y(), 1e3 * p.hit.point.z());
+  return buf;
+}
+
+std::vector<OrientedBox> ClearanceBoxes(const HarnessDrawing& drawing) {
+  std::vector<OrientedBox> boxes;
+  for (const DrawnSolid& s : drawing.solids)
+    boxes.push_back(s.mesh.vertices.cols() > 0 ? BoundingBoxOf(s.mesh) : OrientedBox{});
+  return boxes;
+}
+
+ClearanceCable ClearanceCableOf(const CableRelaxation& r, const Polyline* centreline,
+                                const HarnessDrawing& drawing,
+                                const std::vector<OrientedBox>& boxes,
+                                const HarnessConfig& config) {
+  ClearanceCable c;
+  c.name = r.setup.name;
+  c.centreline = centreline;
+  c.radius = 0.5 * r.setup.spec.material.diameter;
+  c.min_clearance = config.For(c.name).min_clearance.value_or(0.0);
+  // A solid holds the cable when one of its supports lies in the solid's box: a clip found on
+  // it, or an end held in a connector or ring (the way SetUpCable finds clips).
+  for (size_t k = 0; k < boxes.size() && k < drawing.solids.size(); ++k) {
+    for (const SupportSpec& sp : r.setup.spec.supports)
+      if (boxes[k].half_extent.prod() > 0 && boxes[k].Contains(sp.position)) {
+        c.clipped_to.push_back(drawing.solids[k].name);
+        break;
+      }
+  }
+  return c;
+}
+
+std::vector<ClearancePair> MeasureHarnessClearances(const HarnessConfig& config,
+                                                    const RelaxedHarness& h) {
+  std::vector<SolidClearance> geometry;
+  geometry.reserve(h.drawing.solids.size());
+  std::vector<ClearanceSolid> solids;
+  for (const DrawnSolid& s : h.drawing.solids) geometry.emplace_back(s.mesh);
+  for (size_t k = 0; k < h.drawing.solids.size(); ++k)
+    solids.push_back({h.drawing.solids[k].name, &geometry[k],
+                      config.SolidMinClearance(h.drawing.solids[k].name)});
+  const std::vector<OrientedBox> boxes = ClearanceBoxes(h.drawing);
+  std::vector<ClearanceCable> cables;
+  for (size_t i = 0; i < h.cables.size(); ++i)
+    if (h.cables[i])
+      cables.push_back(
+          ClearanceCableOf(*h.cables[i], &h.cables[i]->relaxed, h.drawing, boxes, config));
+  return MeasureClearances(cables, solids);
+}
+
+}  // namespace cablefit::addin
