@@ -415,7 +415,7 @@ std::optional<FileTolerance> VaryHarnessTolerances(const HarnessConfig& config,
       continue;
     }
     try {
-      for (CableTolerance& ct : NetworkTolerance(*f, g, boxes, config, options, threads, &ft.problems))
+      for (CableTolerance& ct : NetworkTolerance(h, g, boxes, config, options, threads, &ft.problems))
         ft.cables.push_back(std::move(ct));
     } catch (const std::exception& e) {
       ft.problems.push_back("tolerances: network " + GroupLabel(h.drawing, g) + ": " + e.what());
