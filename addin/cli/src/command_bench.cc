@@ -1,5 +1,5 @@
 // `cablefit bench`: performance figures of the rod core, one per line `name: value unit`.
-// Reports, never asserts (targets are in the issues: cold <= 5 ms, warm <= 1 ms, linear growth).
+// Reports, never asserts (the goals: cold <= 5 ms, warm <= 1 ms, growth linear in the elements).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>

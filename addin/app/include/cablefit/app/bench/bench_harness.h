@@ -27,7 +27,7 @@ struct KblSizedHarnessSize {
   double length_change = 0.0;
 };
 
-/// A harness the size of the largest real KBL harness the issue names (183 segments, 184 nodes,
+/// A harness the size of the largest real KBL harness in use (183 segments, 184 nodes,
 /// 16 fixings), generated deterministically: a tree whose every node of two or more segments
 /// is a junction (splice or breakout) and whose every end node is clamped (a connector), with
 /// bundle diameters of 3-12 mm. Built for `cablefit bench`.
