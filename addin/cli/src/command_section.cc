@@ -112,7 +112,7 @@ void RegisterSectionCommand(CLI::App& app, int* exit_code) {
     if (text)
       std::cout << SectionSummaryText(result, options->input, options->out);
     else
-      std::cout << out.dump(2) << std::endl;
+      std::cout << out.dump(2, ' ', false, json::Json::error_handler_t::replace) << std::endl;
     *exit_code = kExitOk;
   });
 }

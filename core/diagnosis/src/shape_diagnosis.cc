@@ -6,7 +6,8 @@
 // 3. FitEffect (effect_fit) for every model of the catalogue (shape_effects): Levenberg-Marquardt
 //    on the seen points, screening many starts where the problem is not convex.
 // 4. SearchEffectPairs (effect_pair_search), when the best single fit leaves more than the
-//    recording's noise: pairs of effects by forward selection, joint refits and a swap.
+//    recording's noise: every allowed pair screened on the coarse level from many starts, the
+//    best few fitted jointly on the fine model.
 // 5. RankModels (model_selection): BIC with the noise estimated from the best model's residual
 //    (floored by the recording's own noise); `none` unless an effect wins by min_bic_gain. The
 //    best fit's residual against the recording's noise tells whether anything explains it.

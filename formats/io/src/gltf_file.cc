@@ -105,7 +105,7 @@ std::string EncodeGlb(const std::vector<GltfMesh>& meshes, const std::string& ge
     doc["bufferViews"] = views;
     doc["buffers"] = {{{"byteLength", bin.size()}}};
   }
-  std::string text = doc.dump();
+  std::string text = doc.dump(-1, ' ', false, json::error_handler_t::replace);
   Pad4(&text, ' ');
   Pad4(&bin, '\0');
   std::string out;

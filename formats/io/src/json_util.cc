@@ -53,8 +53,10 @@ Json ReadJsonFile(const std::string& path) {
 }
 
 void WriteJsonFile(const std::string& path, const Json& value, int indent) {
-  // Dump before opening: a serialisation error (invalid UTF-8) must not leave a temp file.
-  const std::string text = value.dump(indent) + "\n";
+  // A string that is not UTF-8 (a name out of a file that uses another encoding) is written with
+  // U+FFFD for its bad bytes: one odd name must not cost the whole result file.
+  const std::string text =
+      value.dump(indent, ' ', false, Json::error_handler_t::replace) + "\n";
   WriteFileAtomically(path, text);
 }
 

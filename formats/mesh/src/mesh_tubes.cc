@@ -192,12 +192,20 @@ std::vector<Vec3> Tangents(const std::vector<Vec3>& pts, double step, double win
   return t;
 }
 
-// The end point of a tube beyond `end` in direction `out` (unit): the area centroid of the cap,
-// i.e. of the faces near the end that face along `out` (the centre of a flat disc cap, even if
-// `out` is a few degrees off). Without such faces (a rounded or ragged end), the point as far
-// along `out` as the mesh reaches within 1.5 radii of the axis.
-Vec3 CapPoint(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double radius) {
-  Vec3 weighted = Vec3::Zero();
+// A tube's end: its point and, where the end is a flat cap, the cap's outward normal.
+struct TubeEnd {
+  Vec3 point;
+  std::optional<Vec3> normal;
+};
+
+// The end of a tube beyond `end` in direction `out` (unit): the area centroid of the cap, i.e. of
+// the faces near the end that face along `out` (the centre of a flat disc cap, even if `out` is
+// a few degrees off), and their area-weighted normal: the cable's axis there, exact however
+// coarse the tessellation, where the route's last slices are not (their cuts reach into the
+// cap). Without such faces (a rounded or ragged end), the point as far along `out` as the mesh
+// reaches within 1.5 radii of the axis, and no normal.
+TubeEnd CapEnd(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double radius) {
+  Vec3 weighted = Vec3::Zero(), normal = Vec3::Zero();
   double area = 0, reach = 0;
   for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
     const Vec3 a = mesh.vertices.col(mesh.faces(0, f)), b = mesh.vertices.col(mesh.faces(1, f)),
@@ -215,10 +223,43 @@ Vec3 CapPoint(const TriangleMesh& mesh, const Vec3& end, const Vec3& out, double
     const Vec3 n = (b - a).cross(c - a);  // |n| = 2 * area
     if (n.norm() <= 0 || n.normalized().dot(out) < 0.9) continue;
     weighted += 0.5 * n.norm() * centroid;
+    normal += 0.5 * n;
     area += 0.5 * n.norm();
   }
-  if (area > 0.5 * M_PI * radius * radius) return weighted / area;
-  return end + reach * out;
+  if (area > 0.5 * M_PI * radius * radius) {
+    // A flat cap: its faces' normals agree (a domed or stepped end's do not, and its centroid
+    // normal would be no axis).
+    const double flatness = normal.norm() / area;
+    if (flatness > 1.0 - 1e-6) return {weighted / area, normal.normalized()};
+    return {weighted / area, std::nullopt};
+  }
+  return {end + reach * out, std::nullopt};
+}
+
+// Puts the end of `pts` (its front when `front`; points about half a radius apart) on the cap
+// `cap`. Where the cap is flat, the last three radii become a cubic Hermite arc from the route
+// there to the cap's centre along the cap's normal: the slices near a cap reach into it, and a
+// coarse tessellation's slice centres scatter enough that a tangent taken from them is off by
+// milliradians, which a clamp there would turn into millimetres of sag.
+void EndAtCap(const TubeEnd& cap, double radius, bool front, std::vector<Vec3>* pts) {
+  if (front) std::reverse(pts->begin(), pts->end());
+  if (cap.normal) {
+    const Vec3 n = *cap.normal;
+    while (pts->size() > 3 && (cap.point - pts->back()).dot(n) < 3.0 * radius) pts->pop_back();
+    const size_t k = pts->size() - 1;
+    const Vec3 p0 = (*pts)[k];
+    const double chord = (cap.point - p0).norm();
+    Vec3 t0 = ((*pts)[k] - (*pts)[k - 2]).normalized();
+    if (!(t0.dot(n) > 0.5)) t0 = n;  // no usable direction inside: the cap's
+    const int m = std::max(2, static_cast<int>(std::ceil(chord / (0.5 * radius))));
+    for (int i = 1; i < m; ++i) {
+      const double u = static_cast<double>(i) / m, u2 = u * u, u3 = u2 * u;
+      pts->push_back((2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * chord * t0 +
+                     (-2 * u3 + 3 * u2) * cap.point + (u3 - u2) * chord * n);
+    }
+  }
+  pts->push_back(cap.point);
+  if (front) std::reverse(pts->begin(), pts->end());
 }
 
 // Every edge shared by exactly two faces (the skeleton helper says the same, later and dearer).
@@ -349,12 +390,12 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
         // Carry free ends out to the caps, where the skeleton stops short.
         if (route.start_is_end) {
           const Vec3 out = (pts[0] - pts[std::min(4, n - 1)]).normalized();
-          pts.insert(pts.begin(), CapPoint(mesh, pts[0], out, radius));
+          EndAtCap(CapEnd(mesh, pts[0], out, radius), radius, /*front=*/true, &pts);
         }
         if (route.finish_is_end) {
           const int m = static_cast<int>(pts.size());
           const Vec3 out = (pts[m - 1] - pts[std::max(0, m - 5)]).normalized();
-          pts.push_back(CapPoint(mesh, pts[m - 1], out, radius));
+          EndAtCap(CapEnd(mesh, pts[m - 1], out, radius), radius, /*front=*/false, &pts);
         }
         MeshTube tube;
         tube.component = component;

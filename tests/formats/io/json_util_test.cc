@@ -64,6 +64,16 @@ TEST(JsonUtil, WriteReadRoundTripsFullPrecision) {
   EXPECT_EQ(back["v"][1].get<double>(), 0.2);
 }
 
+TEST(JsonUtil, AStringThatIsNotUtf8IsWrittenWithReplacementCharacters) {
+  // A name out of a Latin-1 file: the result file is written, the bad byte replaced.
+  const auto dir = FreshTempDir("io");
+  const auto path = (dir / "latin1.json").string();
+  WriteJsonFile(path, Json{{"name", std::string("Kabelbaum T\xfcr")}, {"n", 2}});
+  const Json back = ReadJsonFile(path);
+  EXPECT_EQ(back["name"].get<std::string>(), "Kabelbaum T\xef\xbf\xbdr");
+  EXPECT_EQ(back["n"].get<int>(), 2);
+}
+
 TEST(JsonUtil, ReadJsonFileErrors) {
   const auto dir = FreshTempDir("io");
   EXPECT_THROW_WITH(ReadJsonFile((dir / "none.json").string()), FileError, "no such file");

@@ -393,11 +393,13 @@ namespace {
 // there), so one stretch that cannot be solved leaves every other with a result.
 void RelaxCablesOneByOne(const HarnessDrawing& drawing, const RelaxGroup& group,
                          const std::vector<OrientedBox>& boxes, const HarnessConfig& config,
-                         const SimulationOptions& options, const std::string& why,
+                         const SimulationOptions& options, std::string why,
                          GroupOutcome* out) {
+  // `why` by value: the caller's reason may be a message of one of the cables cleared here.
   out->cables.clear();
-  const std::string note = "the network of " + std::to_string(group.cables.size()) +
-                           " cables did not converge as one (" + why +
+  const size_t n = group.cables.size();
+  const std::string note = "the network of " + std::to_string(n) + (n == 1 ? " cable" : " cables") +
+                           " did not converge as one (" + why +
                            "): relaxed on its own, its ends at junctions held as drawn";
   for (int c : group.cables) {
     try {

@@ -64,7 +64,8 @@ std::string MotionReportSection(const std::vector<RelaxedFile>& files) {
       << "_frames=[";
     for (size_t k = 0; k < pictures.frames.size(); ++k) {
       // JSON strings are valid JavaScript literals; '<' escaped so no "</script>" can appear.
-      std::string pair = json::Json::array({pictures.frames[k], pictures.captions[k]}).dump();
+      std::string pair = json::Json::array({pictures.frames[k], pictures.captions[k]})
+                             .dump(-1, ' ', false, json::Json::error_handler_t::replace);
       std::string safe;
       for (char c : pair) safe += c == '<' ? std::string("\\u003c") : std::string(1, c);
       h << (k ? "," : "") << safe;

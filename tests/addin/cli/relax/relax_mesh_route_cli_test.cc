@@ -32,8 +32,14 @@ json::Json Relaxed(const fs::path& input) {
   return j.at("cables").at(0);
 }
 
-TEST(RelaxMeshRoute, ASaggingTubeFromStlRelaxesWhereTheSameTubeFromStepDoes) {
-  const fs::path dir = testing::FreshTempDir("relax_mesh_route");
+Vec3 Tangent(const json::Json& cable, size_t support) {
+  const json::Json& t = cable.at("supports").at(support).at("tangent");
+  return Vec3(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>());
+}
+
+// The distance between the routes relaxed from `sides`-gon STL rings every `ring` [m] and from
+// the exact STEP tube.
+double StlApartFromStep(const fs::path& dir, int sides, double ring) {
   const double diameter = 0.008;
   HarnessDrawing drawing;
   DrawnCable cable;
@@ -42,16 +48,56 @@ TEST(RelaxMeshRoute, ASaggingTubeFromStlRelaxesWhereTheSameTubeFromStepDoes) {
   cable.diameter = diameter;
   drawing.cables.push_back(cable);
   WriteRelaxedStep((dir / "sag.step").string(), drawing, {RelaxedCable{0, cable.centreline, diameter}});
-  // 24 sides, a ring every 5 mm: a facet's chord sags 0.034 mm inside the surface.
-  WriteMeshFile((dir / "sag.stl").string(), SweepTubeMesh(testing::SampleCurve(Sag, 83), diameter, 24),
-                0.001);
+  const int rings = static_cast<int>(std::lround(0.41 / ring)) + 1;
+  WriteMeshFile((dir / "sag.stl").string(),
+                SweepTubeMesh(testing::SampleCurve(Sag, rings), diameter, sides), 0.001);
   const json::Json step = Relaxed(dir / "sag.step"), stl = Relaxed(dir / "sag.stl");
   EXPECT_NEAR(stl.at("diameter").get<double>(), step.at("diameter").get<double>(), 1e-3 * diameter);
   const double apart = std::max(testing::FarthestFromCentreline(step, stl),
                                 testing::FarthestFromCentreline(stl, step));
-  std::printf("STL vs STEP relaxed route: %.4f mm apart; diameters %.4f / %.4f mm\n", 1e3 * apart,
+  std::printf("%d sides (chord sag %.3f mm), rings every %.0f mm: STL vs STEP relaxed route %.4f "
+              "mm apart; diameters %.4f / %.4f mm\n",
+              sides, 0.5e3 * diameter * (1 - std::cos(M_PI / sides)), 1e3 * ring, 1e3 * apart,
               1e3 * stl.at("diameter").get<double>(), 1e3 * step.at("diameter").get<double>());
-  EXPECT_LT(apart, 1e-4);
+  return apart;
+}
+
+TEST(RelaxMeshRoute, ASaggingTubeFromStlRelaxesWhereTheSameTubeFromStepDoes) {
+  // 24 sides, a ring every 5 mm: a facet's chord sags 0.034 mm inside the surface.
+  EXPECT_LT(StlApartFromStep(testing::FreshTempDir("relax_mesh_route"), 24, 0.005), 0.01e-3);
+}
+
+TEST(RelaxMeshRoute, AnotherMeshersCoarseExportRelaxesWhereTheExactTubeDoes) {
+  // The same tube tessellated by FreeCAD at 0.3 mm chord deflection (tests/data/mesh/README.md):
+  // no rings, long thin facets, fan caps. The end tangents come from the caps' normals; taken
+  // from the last slice centres they were 3-5 mrad off and the relaxed routes 0.08-0.14 mm apart.
+  const fs::path dir = testing::FreshTempDir("relax_mesh_route_occt");
+  const double diameter = 0.008;
+  HarnessDrawing drawing;
+  DrawnCable cable;
+  cable.name = "sag";
+  cable.centreline = testing::SampleCurve(Sag, 401);
+  cable.diameter = diameter;
+  drawing.cables.push_back(cable);
+  WriteRelaxedStep((dir / "sag.step").string(), drawing, {RelaxedCable{0, cable.centreline, diameter}});
+  fs::copy_file(testing::SourceDir() / "tests/data/mesh/sag_tube_0.3mm_deflection.stl",
+                dir / "sag_mesh.stl");
+  const json::Json step = Relaxed(dir / "sag.step"), stl = Relaxed(dir / "sag_mesh.stl");
+  EXPECT_NEAR(stl.at("diameter").get<double>(), step.at("diameter").get<double>(), 1e-3 * diameter);
+  const double apart = std::max(testing::FarthestFromCentreline(step, stl),
+                                testing::FarthestFromCentreline(stl, step));
+  std::printf("FreeCAD 0.3 mm mesh vs STEP relaxed route: %.4f mm apart\n", 1e3 * apart);
+  EXPECT_LT(apart, 0.02e-3);
+  for (size_t k = 0; k < 2; ++k) {
+    const Vec3 a = Tangent(step, k), b = Tangent(stl, k);
+    EXPECT_LT(std::acos(std::min(1.0, a.dot(b))), 0.5e-3) << "support " << k;
+  }
+}
+
+TEST(RelaxMeshRoute, ACoarselyTessellatedTubeRelaxesWhereTheExactTubeDoes) {
+  // 8 sides, a ring every 10 mm: a facet's chord sags 0.3 mm inside the surface, as an export at
+  // a coarse chord tolerance gives.
+  EXPECT_LT(StlApartFromStep(testing::FreshTempDir("relax_mesh_route_coarse"), 8, 0.010), 0.02e-3);
 }
 
 }  // namespace
