@@ -1,5 +1,7 @@
 #include "cablefit/core/network/network_model.h"
 
+#include <Eigen/Geometry>
+
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/internal/quaternion.h"
 #include "network_parts.h"
@@ -12,8 +14,27 @@ namespace {
 // curvature on top of any natural curvature: at zero load the drawn shape is then its
 // equilibrium, whatever the element length of the level. Junction edges keep their rest
 // rotations, which hold the drawn angles already.
-void AddPreformedCurvature(NetworkModel& net, const std::vector<Eigen::Vector4d>& drawn) {
+void AddPreformedCurvature(NetworkModel& net, std::vector<Eigen::Vector4d> drawn) {
   const RodModel& m = net.rod;
+  // A clamp or clip holds its frame where it will be held, its tangent the curve's at the
+  // support, not along the neighbouring element's chord (which DrawnFrames gives its item):
+  // half an element's turning apart, which the clamp would force into the preformed cable
+  // (5 mm in the middle of a 625 mm cable clamped where it bends at 20 mm radius). A clamp's
+  // item takes the held frame; a clip's, free to turn about its tangent, the element's frame
+  // turned the least way onto the held tangent.
+  for (size_t i = 0; i < m.items.size(); ++i) {
+    const RodItem& it = m.items[i];
+    if (it.is_element || it.junction >= 0 || it.support < 0) continue;
+    const RodSupport& sp = m.supports[static_cast<size_t>(it.support)];
+    if (sp.kind == SupportKind::kClamp) {
+      drawn[i] = internal::quat::FromMatrix(sp.frame.Matrix());
+    } else {
+      const Eigen::Matrix3d r = internal::quat::ToMatrix(drawn[i]);
+      const Eigen::Matrix3d turn =
+          Eigen::Quaterniond::FromTwoVectors(r.col(2), sp.frame.d3.normalized()).toRotationMatrix();
+      drawn[i] = internal::quat::FromMatrix(turn * r);
+    }
+  }
   std::vector<int> item_branch(m.items.size(), -1);
   for (size_t b = 0; b < net.branches.size(); ++b)
     for (const int element : net.branches[b].elements)
