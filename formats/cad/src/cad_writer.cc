@@ -159,8 +159,9 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       const double tolerance = std::min(0.01, 1e-3 * size / kMetresPerOcctUnit);  // [mm]
       const auto add = [&](const CentrelineRows& along) {
         CableSweep sweep;
-        // A flat strip is swept by OCCT's pipe shell, whose surfaces stay small along OCCT's
-        // own fit (cubic_spline_fit.h); a round tube's surface is built on the spine's poles.
+        // A round tube's surface is built on its spine's poles (occt_pipe_surface.h), so its
+        // spine is our fit with few poles (MakeTubeSpineEdge); a flat strip is swept by OCCT's
+        // pipe shell, whose surfaces stay small only along OCCT's own fit (MakeSplineEdge).
         sweep.spine = BRepBuilderAPI_MakeWire(relaxed.flat ? MakeSplineEdge(along.topRows<3>(), tolerance)
                                                            : MakeTubeSpineEdge(along.topRows<3>(), tolerance))
                           .Wire();
