@@ -159,7 +159,12 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       const double tolerance = std::min(0.01, 1e-3 * size / kMetresPerOcctUnit);  // [mm]
       const auto add = [&](const CentrelineRows& along) {
         CableSweep sweep;
-        sweep.spine = BRepBuilderAPI_MakeWire(MakeSplineEdge(along.topRows<3>(), tolerance)).Wire();
+        // A round tube's surface is built on its spine's poles (occt_pipe_surface.h), so its
+        // spine is our fit with few poles (MakeTubeSpineEdge); a flat strip is swept by OCCT's
+        // pipe shell, whose surfaces stay small only along OCCT's own fit (MakeSplineEdge).
+        sweep.spine = BRepBuilderAPI_MakeWire(relaxed.flat ? MakeSplineEdge(along.topRows<3>(), tolerance)
+                                                           : MakeTubeSpineEdge(along.topRows<3>(), tolerance))
+                          .Wire();
         sweep.diameter = diameter / kMetresPerOcctUnit;
         if (relaxed.flat) {
           sweep.guide = BRepBuilderAPI_MakeWire(MakeSplineEdge(along.bottomRows<3>(), tolerance)).Wire();

@@ -5,8 +5,14 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepOffsetAPI_MakePipeShell.hxx>
+#include <BRep_Tool.hxx>
+#include <Precision.hxx>
+#include <TopLoc_Location.hxx>
+#include <TopoDS.hxx>
 #include <TopExp_Explorer.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -17,7 +23,9 @@
 #include <optional>
 #include <string>
 
+#include "cablefit/core/base/cubic_spline_fit.h"
 #include "cablefit/core/base/errors.h"
+#include "occt_pipe_surface.h"
 #include "tube_recovery.h"
 
 namespace cablefit {
@@ -47,6 +55,24 @@ bool ReadsBackAsTube(const TopoDS_Shape& shape, double diameter) {
   return tube && std::abs(2 * tube->radius - diameter) <= kTubeRelativeTolerance * diameter;
 }
 
+// The spine's curve when it is one untrimmed, unmoved B-spline edge; null otherwise.
+Handle(Geom_BSplineCurve) SingleBSpline(const TopoDS_Wire& spine) {
+  TopExp_Explorer ex(spine, TopAbs_EDGE);
+  if (!ex.More()) return nullptr;
+  const TopoDS_Edge edge = TopoDS::Edge(ex.Current());
+  ex.Next();
+  if (ex.More()) return nullptr;
+  TopLoc_Location location;
+  double first = 0.0, last = 0.0;
+  const Handle(Geom_BSplineCurve) curve =
+      Handle(Geom_BSplineCurve)::DownCast(BRep_Tool::Curve(edge, location, first, last));
+  if (curve.IsNull() || !location.IsIdentity() ||
+      std::abs(first - curve->FirstParameter()) > Precision::PConfusion() ||
+      std::abs(last - curve->LastParameter()) > Precision::PConfusion())
+    return nullptr;
+  return curve;
+}
+
 }  // namespace
 
 TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
@@ -68,8 +94,43 @@ TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
   }
 }
 
+TopoDS_Edge MakeTubeSpineEdge(const Eigen::Matrix3Xd& points, double tolerance) {
+  const int n = static_cast<int>(points.cols());
+  if (n >= 4 && points.allFinite()) {
+    if (const std::optional<CubicSpline> fit = FitCubicSpline(points, tolerance, n)) {
+      const int m = static_cast<int>(fit->poles.cols());
+      TColgp_Array1OfPnt poles(1, m);
+      for (int i = 0; i < m; ++i)
+        poles.SetValue(i + 1, gp_Pnt(fit->poles(0, i), fit->poles(1, i), fit->poles(2, i)));
+      const int distinct = static_cast<int>(fit->interior_knots.size()) + 2;
+      TColStd_Array1OfReal knots(1, distinct);
+      TColStd_Array1OfInteger multiplicities(1, distinct);
+      for (int k = 0; k < distinct; ++k) {
+        knots.SetValue(k + 1, k == 0 ? 0.0
+                              : k == distinct - 1 ? 1.0
+                                                  : fit->interior_knots[static_cast<size_t>(k - 1)]);
+        multiplicities.SetValue(k + 1, k == 0 || k == distinct - 1 ? 4 : 1);
+      }
+      try {
+        return BRepBuilderAPI_MakeEdge(new Geom_BSplineCurve(poles, knots, multiplicities, 3)).Edge();
+      } catch (const Standard_Failure&) {
+        // OCCT's fit below.
+      }
+    }
+  }
+  return MakeSplineEdge(points, tolerance);
+}
+
 TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter) {
   if (!(diameter > 0)) throw InvalidInput("a tube needs a positive diameter");
+  // A spine of one B-spline edge (what MakeSplineEdge gives) gets its surface directly: exact
+  // circles, poles from the spine's own, no sweep (tens of times faster, a third of the size).
+  if (const Handle(Geom_BSplineCurve) centre = SingleBSpline(spine); !centre.IsNull()) {
+    if (std::optional<TopoDS_Shape> tube =
+            MakePipeSurfaceTube(centre, 0.5 * diameter, kTubeRelativeTolerance * diameter);
+        tube && IsValidTube(*tube))
+      return *tube;
+  }
   std::string problem = "could not sweep the tube along the centreline";
   try {
     BRepAdaptor_CompCurve curve(spine);

@@ -14,8 +14,16 @@ namespace cablefit {
 /// (GeomAPI_PointsToBSpline). Throws InvalidInput when the points cannot be approximated.
 TopoDS_Edge MakeSplineEdge(const Eigen::Matrix3Xd& points, double tolerance);
 
-/// A solid tube of `diameter` swept along `spine` by a circle normal to the spine's start
-/// (BRepOffsetAPI_MakePipeShell: corrected Frenet frame, else the discrete trihedron), capped.
+/// A round tube's spine: the cubic B-spline of FitCubicSpline (core/base: least squares with
+/// as few poles as hold `tolerance`, ~4x faster than MakeSplineEdge's OCCT fit; the tube's
+/// surface is built on the spine's poles, so few poles make a small file); MakeSplineEdge's
+/// fit for fewer than 4 points or should that fail. Throws InvalidInput as MakeSplineEdge.
+TopoDS_Edge MakeTubeSpineEdge(const Eigen::Matrix3Xd& points, double tolerance);
+
+/// A solid tube of `diameter` along `spine`, capped: for a spine of one B-spline edge the
+/// pipe surface built directly (MakePipeSurfaceTube); else, or where that fails, swept by a
+/// circle normal to the spine's start (BRepOffsetAPI_MakePipeShell: corrected Frenet frame,
+/// else the discrete trihedron).
 /// Throws InvalidInput when neither sweep gives a valid solid.
 TopoDS_Shape MakeTubeSolid(const TopoDS_Wire& spine, double diameter);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -34,6 +35,9 @@ constexpr const char* kNamespaceSuffix = "/KBLSchema";
 // KBL's Cartesian_point carries no unit: the format fixes coordinates in millimetres. Each
 // segment's drawn length is cross-checked against its Virtual_length, which does carry a unit.
 constexpr double kCoordinateUnit = 1e-3;  // [m]
+// A curve no longer than this between its nodes (cut at both, or drawn onto nodes that
+// coincide) has nothing left to relax [m].
+constexpr double kNoLength = 1e-6;
 
 const xmlNode* Resolve(const IdIndex& ids, const std::string& ref, const std::string& from,
                        const char* expected = nullptr) {
@@ -358,38 +362,107 @@ void AddRoutings(const xmlNode* root, const IdIndex& ids,
   }
 }
 
-// Positions the nodes, cuts curves that run on past their node, records the junctions; returns
-// per segment whether it misses one of its nodes.
+// Moves the curve's end (`at_start` or its last point) onto `node`, the move fading linearly in
+// arc length to nothing at the other end: the drawn shape as far as a curve that must reach
+// both its nodes can keep it, the other end where it was.
+void DrawEndTo(Polyline* route, bool at_start, const Vec3& node) {
+  Eigen::Matrix3Xd& p = route->points;
+  const Eigen::Index n = p.cols();
+  const double s0 = route->s[0], length = route->s[n - 1] - s0;
+  const Vec3 delta = node - Vec3(p.col(at_start ? 0 : n - 1));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double w = length > 0 ? (route->s[i] - s0) / length : 0.5;
+    p.col(i) += (at_start ? 1.0 - w : w) * delta;
+  }
+  p.col(at_start ? 0 : n - 1) = node;  // exactly, whatever the rounding above
+  route->ParameteriseByChords();
+}
+
+std::string LengthText(const std::optional<double>& metres) {
+  if (!metres) return "not given";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.2f mm", 1e3 * *metres);
+  return buf;
+}
+
+// Whether cutting the curve at its node (it runs on past it) gives the segment's length: the
+// cut when the cut curve is at least as close to Virtual_length as the whole one (always when
+// the file gives none). A curve that only happens to pass near the node is not cut short.
+bool CutsToItsLength(const Polyline& route, bool at_start, const Vec3& node,
+                     const std::optional<double>& virtual_length, double tolerance) {
+  Polyline cut = route;
+  if (!TrimAtNode(&cut, at_start, node, tolerance)) return false;
+  if (!virtual_length) return true;
+  const double whole = route.s[route.size() - 1], part = cut.s[cut.size() - 1];
+  return std::abs(part - *virtual_length) <= std::abs(whole - *virtual_length);
+}
+
+// Where most of the ends agree (within the tolerance; the first in file order on a tie), and
+// how many ends agree there.
+std::pair<Vec3, int> Meeting(const std::vector<CableJunction::End>& ends,
+                             const std::function<Vec3(const CableJunction::End&)>& end_point,
+                             double tolerance) {
+  Vec3 where = end_point(ends.front());
+  int best = 0;
+  for (const CableJunction::End& a : ends) {
+    int agree = 0;
+    for (const CableJunction::End& e : ends)
+      agree += (end_point(e) - end_point(a)).norm() <= tolerance;
+    if (agree > best) {
+      best = agree;
+      where = end_point(a);
+    }
+  }
+  return {where, best};
+}
+
+// Positions the nodes and makes every segment reach its nodes, recording the junctions; returns
+// per segment whether it has to be left out. The harness is built from one consistent choice:
+// - a node's own point where a curve ends there (or runs through it, below);
+// - else where its segments' curves meet each other (two or more ending together), or the end
+//   of its only segment's curve: the node's point is off (one note per node);
+// - a curve that runs on past its node is cut there when that brings it to its Virtual_length
+//   (a segment split in the design tool whose curve kept the old extent);
+// - any other curve end away from its node is drawn onto the node (DrawEndTo; one note per end)
+//   instead of cut short: the segment keeps its drawn length as nearly as it can, and
+//   KblSegment::end_drawn_to_node says the file's geometry was changed.
 std::vector<bool> PlaceNodes(NodeMap* node_map, const KblReadOptions& options, KblHarness* out) {
   KblHarness& h = *out;
   NodeMap& nodes = *node_map;
-  // Nodes' positions and junctions. A node without a point of its own is where most of its
-  // segments' ends agree (the first in file order on a tie); an end farther than the tolerance
-  // misses its node.
   for (size_t i = 0; i < h.segments.size(); ++i) {
     nodes[h.segments[i].start.node].ends.push_back({static_cast<int>(i), true});
     nodes[h.segments[i].end.node].ends.push_back({static_cast<int>(i), false});
   }
-  auto end_point = [&](const CableJunction::End& e) -> Vec3 {
-    const Polyline& c = h.drawing.cables[static_cast<size_t>(e.cable)].centreline;
-    return c.points.col(e.at_start ? 0 : c.size() - 1);
+  auto route_of = [&](const CableJunction::End& e) -> Polyline& {
+    return h.drawing.cables[static_cast<size_t>(e.cable)].centreline;
   };
+  const std::function<Vec3(const CableJunction::End&)> end_point = [&](const CableJunction::End& e) {
+    const Polyline& c = route_of(e);
+    return Vec3(c.points.col(e.at_start ? 0 : c.size() - 1));
+  };
+  const double tol = options.node_tolerance;
   std::vector<bool> refused(h.segments.size(), false);
   for (auto& [node_id, info] : nodes) {
     if (info.ends.empty()) continue;
-    Vec3 ref;
+    const auto [meet, agreeing] = Meeting(info.ends, end_point, tol);
+    Vec3 ref = meet;
     if (info.point) {
       ref = *info.point;
-    } else {
-      int best = -1;
-      for (size_t a = 0; a < info.ends.size(); ++a) {
-        int agree = 0;
-        for (const auto& e : info.ends)
-          agree += (end_point(e) - end_point(info.ends[a])).norm() <= options.node_tolerance;
-        if (agree > best) {
-          best = agree;
-          ref = end_point(info.ends[a]);
-        }
+      bool lands = false;  // some curve ends at the node's point or is cut there
+      for (const CableJunction::End& e : info.ends) {
+        const KblSegment& seg = h.segments[static_cast<size_t>(e.cable)];
+        lands = lands || (end_point(e) - ref).norm() <= tol ||
+                CutsToItsLength(route_of(e), e.at_start, ref, seg.virtual_length, tol);
+      }
+      if (!lands && (agreeing >= 2 || info.ends.size() == 1)) {
+        char buf[320];
+        std::snprintf(buf, sizeof buf,
+                      "Node %s: its Cartesian_point is %.2f mm from where %s: placed there",
+                      node_id.c_str(), 1e3 * (meet - ref).norm(),
+                      info.ends.size() == 1 ? "its only segment's centre curve ends"
+                                            : "its segments' centre curves meet");
+        h.notes.push_back(buf);
+        ref = meet;
       }
     }
     CableJunction j;
@@ -397,22 +470,34 @@ std::vector<bool> PlaceNodes(NodeMap* node_map, const KblReadOptions& options, K
     for (const CableJunction::End& e : info.ends) {
       KblSegment& seg = h.segments[static_cast<size_t>(e.cable)];
       (e.at_start ? seg.start : seg.end).segments_at_node = static_cast<int>(info.ends.size());
-      if ((end_point(e) - ref).norm() > options.node_tolerance) {
-        Polyline& route = h.drawing.cables[static_cast<size_t>(e.cable)].centreline;
-        const double before = route.s[route.size() - 1];
-        if (TrimAtNode(&route, e.at_start, ref, options.node_tolerance)) {
-          char buf[320];
-          std::snprintf(buf, sizeof buf,
-                        "Segment %s: centre curve runs %.2f mm past its %s %s: trimmed there",
-                        seg.id.c_str(), 1e3 * (before - route.s[route.size() - 1]),
-                        e.at_start ? "Start_node" : "End_node", node_id.c_str());
-          h.notes.push_back(buf);
-          seg.drawn_length = route.s[route.size() - 1];
-        }
-      }
+      Polyline& route = route_of(e);
       const double miss = (end_point(e) - ref).norm();
-      seg.node_miss = std::max(seg.node_miss, miss);
-      if (miss > options.node_tolerance) {
+      const double before = route.s[route.size() - 1];
+      const char* which = e.at_start ? "Start_node" : "End_node";
+      char buf[400];
+      if (miss <= tol) {
+        // Lands on its node.
+      } else if (CutsToItsLength(route, e.at_start, ref, seg.virtual_length, tol)) {
+        TrimAtNode(&route, e.at_start, ref, tol);
+        std::snprintf(buf, sizeof buf,
+                      "Segment %s: centre curve runs %.2f mm past its %s %s: trimmed there",
+                      seg.id.c_str(), 1e3 * (before - route.s[route.size() - 1]), which,
+                      node_id.c_str());
+        h.notes.push_back(buf);
+      } else {
+        DrawEndTo(&route, e.at_start, ref);
+        seg.node_miss = std::max(seg.node_miss, miss);
+        seg.end_drawn_to_node = true;
+        std::snprintf(buf, sizeof buf,
+                      "Segment %s: centre curve ends %.2f mm from its %s %s: its end drawn onto "
+                      "the node (%.2f mm long, was %.2f mm; Virtual_length %s)",
+                      seg.id.c_str(), 1e3 * miss, which, node_id.c_str(),
+                      1e3 * route.s[route.size() - 1], 1e3 * before,
+                      LengthText(seg.virtual_length).c_str());
+        h.notes.push_back(buf);
+      }
+      seg.drawn_length = route.s[route.size() - 1];
+      if (seg.drawn_length <= kNoLength) {
         refused[static_cast<size_t>(e.cable)] = true;
       } else {
         j.ends.push_back(e);
@@ -425,10 +510,10 @@ std::vector<bool> PlaceNodes(NodeMap* node_map, const KblReadOptions& options, K
 }
 
 // `h` without the refused segments (each named in `skipped`), junction indices renumbered.
-KblHarness WithoutRefused(KblHarness h, const std::vector<bool>& refused,
-                          const KblReadOptions& options) {
-  // A segment whose curve misses a node cannot be joined to the harness: it is left out (named
-  // in `skipped`), the others are relaxed. Its index is removed from the junctions too.
+KblHarness WithoutRefused(KblHarness h, const std::vector<bool>& refused) {
+  // A segment whose curve has no length left once it reaches its nodes cannot be relaxed: it is
+  // left out (named in `skipped`), the others are relaxed. Its index is removed from the
+  // junctions too.
   std::vector<int> new_index(h.segments.size(), -1);
   KblHarness kept;
   kept.version = h.version;
@@ -438,10 +523,9 @@ KblHarness WithoutRefused(KblHarness h, const std::vector<bool>& refused,
   for (size_t i = 0; i < h.segments.size(); ++i) {
     if (refused[i]) {
       char buf[256];
-      std::snprintf(
-          buf, sizeof buf,
-          "Segment %s: its centre curve ends %.3f mm from its node (tolerance %.3f mm): left out",
-          h.segments[i].id.c_str(), 1e3 * h.segments[i].node_miss, 1e3 * options.node_tolerance);
+      std::snprintf(buf, sizeof buf,
+                    "Segment %s: its centre curve has no length between its nodes: left out",
+                    h.segments[i].id.c_str());
       kept.drawing.skipped.push_back(buf);
       continue;
     }
@@ -507,7 +591,7 @@ KblHarness ReadContainer(const xmlNode* root, const std::string& path,
 
   AddRoutings(root, ids, seg_index, &h);
   const std::vector<bool> refused = PlaceNodes(&nodes, options, &h);
-  KblHarness kept = WithoutRefused(std::move(h), refused, options);
+  KblHarness kept = WithoutRefused(std::move(h), refused);
   AddLengthNotes(&kept);
   return kept;
 }

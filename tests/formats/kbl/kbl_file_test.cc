@@ -236,8 +236,8 @@ TEST_F(KblBadInput, LengthInAMassUnit) {
   EXPECT_THROW_WITH(ReadKblFile(Write(edited)), FileError, "is a mass, expected a length");
 }
 
-TEST_F(KblBadInput, CurveMissingItsNodeIsLeftOutAndNamed) {
-  // Move the end node's own point 50 mm: the only segment misses it, nothing is left to relax.
+TEST_F(KblBadInput, ANodeOffItsOnlyCurveIsPlacedAtTheCurveEnd) {
+  // Move the end node's own point 50 mm: its only segment's curve decides where it is.
   const std::string text = testing::ReadTextFile(Sample("gearbox"));
   const size_t node = text.find("<Node id=\"Node_2\"");
   ASSERT_NE(node, std::string::npos);
@@ -249,7 +249,70 @@ TEST_F(KblBadInput, CurveMissingItsNodeIsLeftOutAndNamed) {
   const size_t c1 = edited.find("</Coordinates>", c0);
   const double x = std::stod(edited.substr(c0, c1 - c0));
   edited.replace(c0, c1 - c0, std::to_string(x + 50.0));
-  EXPECT_THROW_WITH(ReadKblFile(Write(edited)), FileError, "ends 50.000 mm from its node");
+  const KblHarness h = ReadKblFile(Write(edited));
+  ASSERT_EQ(h.segments.size(), 1u);
+  EXPECT_TRUE(h.drawing.skipped.empty());
+  ASSERT_EQ(h.notes.size(), 1u);
+  EXPECT_NE(h.notes[0].find("Node Node_2: its Cartesian_point is 50.00 mm from where its only "
+                            "segment's centre curve ends: placed there"),
+            std::string::npos)
+      << h.notes[0];
+  // The curve is the file's, untouched: as long as its Virtual_length.
+  const KblSegment& s = h.segments[0];
+  EXPECT_FALSE(s.end_drawn_to_node);
+  EXPECT_NEAR(s.drawn_length, s.virtual_length.value(), 1e-5);
+}
+
+// tests/data/kbl/inconsistent_nodes_4.kbl: Node_1 -S1- Node_2 -S2- Node_3, and S3, S4 from
+// Node_3 (a breakout). Node_3's own point is 25 mm off where the curves of S2, S3, S4 meet,
+// S4's curve starts 30 mm short of that, Node_1's point is 40 mm off S1's start.
+TEST(KblFile, InconsistentNodesAreBuiltFromWhereTheCurvesMeetWithOneNoteEach) {
+  const KblHarness h = ReadKblFile(
+      (testing::SourceDir() / "tests/data/kbl/inconsistent_nodes_4.kbl").string());
+  ASSERT_EQ(h.segments.size(), 4u);
+  EXPECT_TRUE(h.drawing.skipped.empty());
+  auto noted = [&](const std::string& text) {
+    return std::count_if(h.notes.begin(), h.notes.end(), [&](const std::string& n) {
+      return n.find(text) != std::string::npos;
+    });
+  };
+  EXPECT_EQ(noted("Node Node_1: its Cartesian_point is 40.00 mm from where its only segment's "
+                  "centre curve ends: placed there"), 1);
+  EXPECT_EQ(noted("Node Node_3: its Cartesian_point is 25.00 mm from where its segments' centre "
+                  "curves meet: placed there"), 1);
+  EXPECT_EQ(noted("Segment Segment_4: centre curve ends 30.00 mm from its Start_node Node_3: its "
+                  "end drawn onto the node"), 1);
+  EXPECT_EQ(noted("Node "), 2);
+  EXPECT_EQ(noted("trimmed"), 0);
+  // Node_3 is one breakout of three ends, where the curves meet.
+  const Vec3 meet(0.340, 0.180, 0.010);
+  int breakouts = 0;
+  for (const CableJunction& j : h.drawing.junctions) {
+    if (j.ends.size() != 3) continue;
+    ++breakouts;
+    EXPECT_LT((j.position - meet).norm(), 1e-9);
+    for (const CableJunction::End& e : j.ends) {
+      const Polyline& c = h.drawing.cables[static_cast<size_t>(e.cable)].centreline;
+      EXPECT_LT((c.points.col(e.at_start ? 0 : c.size() - 1) - meet).norm(), 1e-9)
+          << h.segments[static_cast<size_t>(e.cable)].id;
+    }
+  }
+  EXPECT_EQ(breakouts, 1);
+  // The curves that reach their nodes keep the file's shape and length; S4 says it was drawn.
+  for (const char* id : {"Segment_1", "Segment_2", "Segment_3"}) {
+    const KblSegment& s = SegmentById(h, id);
+    EXPECT_FALSE(s.end_drawn_to_node) << id;
+    EXPECT_NEAR(s.drawn_length, s.virtual_length.value(), 1e-5) << id;
+  }
+  const KblSegment& s4 = SegmentById(h, "Segment_4");
+  EXPECT_TRUE(s4.end_drawn_to_node);
+  EXPECT_NEAR(s4.node_miss, 0.030, 1e-9);
+  // Its other end stayed on Node_5.
+  const Polyline& c4 = h.drawing.cables[static_cast<size_t>(
+      std::find_if(h.segments.begin(), h.segments.end(),
+                   [](const KblSegment& s) { return s.id == "Segment_4"; }) -
+      h.segments.begin())].centreline;
+  EXPECT_LT((c4.points.col(c4.size() - 1) - Vec3(0.220, 0.330, -0.030)).norm(), 1e-9);
 }
 
 }  // namespace

@@ -487,6 +487,14 @@ std::string HarnessConfig::RigidReason(const std::string& name) const {
   return "a rigid part by harness.json (not matched by \"only\")";
 }
 
+std::string HarnessConfig::PreformedReason(const std::string& name) const {
+  for (const std::string& p : preformed)
+    if (Matches(p, name))
+      return "pre-formed by harness.json (\"preformed\": \"" + p +
+             "\"): its drawn shape is its rest shape, it only sags from it";
+  return "";
+}
+
 HarnessConfig ReadHarnessConfig(const std::string& path) {
   const Json root = json::ReadJsonFile(path);
   if (!root.is_object()) throw FileError(path, "must hold a JSON object");
@@ -496,7 +504,7 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   }
   const FieldReader r(root, path);
   RequireKnownKeys(r, {"format", "gravity", "min_bend_radius_factor", "default", "cables",
-                       "junctions", "junction_defaults", "rigid", "only", "note", "solids",
+                       "junctions", "junction_defaults", "rigid", "only", "preformed", "note", "solids",
                        "motion", "tolerances"});
   if (r.Has("format") && r.RequireString("format") != "cablefit-harness/1") {
     r.Fail("format", "must be \"cablefit-harness/1\"");
@@ -509,6 +517,7 @@ HarnessConfig ReadHarnessConfig(const std::string& path) {
   }
   if (r.Has("rigid")) h.rigid = ReadPatterns(r, "rigid");
   if (r.Has("only")) h.only = ReadPatterns(r, "only");
+  if (r.Has("preformed")) h.preformed = ReadPatterns(r, "preformed");
   if (r.Has("junctions")) {
     const Json& list = r.RequireArray("junctions");
     for (size_t i = 0; i < list.size(); ++i)

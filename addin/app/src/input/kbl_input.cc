@@ -211,6 +211,7 @@ json::Json SegmentJson(const KblSegment& seg, const DrawnCable& drawn, const Seg
        {"virtual_length", OptionalNumber(seg.virtual_length)},
        {"drawn_length", seg.drawn_length},
        {"node_miss", seg.node_miss},
+       {"end_drawn_to_node", seg.end_drawn_to_node},
        {"bundle_diameter", bundle.diameter > 0 ? json::Json(bundle.diameter) : json::Json()},
        {"diameter", drawn.diameter > 0 ? json::Json(drawn.diameter) : json::Json()},
        {"diameter_source", s.diameter_source},
@@ -251,6 +252,12 @@ KblInput ReadKblInput(const std::string& path, const HarnessConfig& user) {
       cc.min_bend_radius_source = "KBL: tightest Bend_radius of the segment's wires";
     }
     facts.fixings = FixingClips(seg, drawn.centreline.s[drawn.centreline.size() - 1], &cc);
+    // A curve drawn onto its node (the file's own did not reach it) is no measure of the
+    // segment's length: Virtual_length, the length the harness is made to, is.
+    if (seg.end_drawn_to_node && seg.virtual_length) {
+      cc.length = CableLength{CableLength::Kind::kMetres, *seg.virtual_length};
+      facts.assumed.push_back("built at its Virtual_length: its centre curve was drawn onto its node");
+    }
     const auto own = user.cables.find(seg.id);
     in.config.cables[seg.id] = own == user.cables.end() ? cc : Overlaid(cc, own->second);
     if (!facts.assumed.empty()) {

@@ -193,6 +193,8 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
     out.notes.push_back("built " + Millimetres(built_length) + " long (harness.json \"length\": " +
                         cc.length->ToString() + "), drawn " + Millimetres(length));
   }
+  if (const std::string why = config.PreformedReason(drawn.name); !why.empty())
+    out.notes.push_back(why);
   out.spec.gravity = cc.gravity.value_or(config.gravity);
   if (cc.min_bend_radius) {
     out.min_bend_radius_limit = *cc.min_bend_radius;

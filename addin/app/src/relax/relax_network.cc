@@ -154,6 +154,7 @@ std::vector<RelaxGroup> GroupCables(const HarnessDrawing& drawing,
           if (boxes[k].Contains(drawing.cables[c].centreline.points.col(i))) seen[k] = 0;
     for (size_t k = 0; k < seen.size(); ++k)
       if (seen[k]) g.obstacles.push_back(static_cast<int>(k));
+    for (int c : g.cables) g.preformed |= !config.PreformedReason(drawing.cables[c].name).empty();
     groups.push_back(std::move(g));
   }
   return groups;
@@ -229,6 +230,7 @@ NetworkSpec GroupNetworkSpec(const HarnessDrawing& drawing, const RelaxGroup& gr
     br.sleeves = su.spec.sleeves;
     br.supports = su.spec.supports;
     br.route = su.route;
+    br.preformed = !config.PreformedReason(su.name).empty();
     spec.gravity = su.spec.gravity;
     spec.branches.push_back(br);
   }

@@ -74,5 +74,27 @@ TEST(KblInput, AProtectionIsASleeveOverItsShareOfTheSegment) {
   EXPECT_NEAR(s1.material->linear_density, 0.080, 1e-12);
 }
 
+TEST(KblInput, ASegmentWhoseCurveWasDrawnOntoItsNodeIsBuiltAtItsVirtualLength) {
+  // Segment_4's curve starts 30 mm short of Node_3 (tests/data/kbl/README.md): drawn onto it,
+  // its drawn length is no longer the file's; the others reach their nodes as drawn.
+  const KblInput in = ReadKblInput(
+      (testing::SourceDir() / "tests/data/kbl/inconsistent_nodes_4.kbl").string(), HarnessConfig{});
+  const CableConfig& s4 = in.config.cables.at("Segment_4");
+  ASSERT_TRUE(s4.length.has_value());
+  EXPECT_EQ(s4.length->kind, CableLength::Kind::kMetres);
+  EXPECT_NEAR(s4.length->value, 0.196364569, 1e-12);
+  EXPECT_TRUE(in.cable_json.at("Segment_4")["end_drawn_to_node"].get<bool>());
+  for (const char* id : {"Segment_1", "Segment_2", "Segment_3"}) {
+    EXPECT_FALSE(in.config.cables.at(id).length.has_value()) << id;
+    EXPECT_FALSE(in.cable_json.at(id)["end_drawn_to_node"].get<bool>()) << id;
+  }
+  // A length the user gives the segment in harness.json still wins.
+  HarnessConfig user;
+  user.cables["Segment_4"].length = CableLength{CableLength::Kind::kRelative, 0.02};
+  const KblInput own = ReadKblInput(
+      (testing::SourceDir() / "tests/data/kbl/inconsistent_nodes_4.kbl").string(), user);
+  EXPECT_EQ(own.config.cables.at("Segment_4").length->kind, CableLength::Kind::kRelative);
+}
+
 }  // namespace
 }  // namespace cablefit::addin

@@ -177,5 +177,67 @@ TEST(RelaxKblCli, ABrokenKblFileFailsAloneAndTheBatchGoesOn) {
       << run.out;
 }
 
+// tests/data/kbl/inconsistent_nodes_4.kbl (README there): nodes off their curves and a curve
+// short of its node. Every segment is relaxed, each change has its note, and every segment
+// comes out at its Virtual_length: three as drawn, the one drawn onto its node by being built
+// at it.
+TEST(RelaxKblCli, InconsistentNodesRelaxEverySegmentAtItsVirtualLength) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_inconsistent");
+  const auto run = RunCablefit("relax " + Q(Kbl("inconsistent_nodes_4.kbl")) + " --out " + Q(out) +
+                               " --no-pictures");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const Json j = json::ReadJsonFile((out / "inconsistent_nodes_4.json").string());
+  ASSERT_EQ(j.at("cables").size(), 4u);
+  EXPECT_TRUE(j.at("not_cables").empty());
+  for (const Json& c : j.at("cables")) {
+    ASSERT_FALSE(c.contains("error")) << c.at("name");
+    const double virtual_length = c.at("kbl").at("virtual_length").get<double>();
+    EXPECT_NEAR(c.at("kbl").at("relaxed_length").get<double>(), virtual_length,
+                0.01 * virtual_length)
+        << c.at("name");
+  }
+  EXPECT_TRUE(CableNamed(j, "Segment_4").at("kbl").at("end_drawn_to_node").get<bool>());
+  int notes = 0;
+  for (const Json& n : j.at("input_notes")) {
+    const std::string text = n.get<std::string>();
+    notes += text.find("Node Node_1: its Cartesian_point") != std::string::npos ||
+             text.find("Node Node_3: its Cartesian_point") != std::string::npos ||
+             text.find("Segment Segment_4: centre curve ends 30.00 mm") != std::string::npos;
+  }
+  EXPECT_EQ(notes, 3);
+}
+
+// harness.json "preformed": the gearbox cable (drawn with a 20 mm bend between its two
+// connectors) keeps its drawn shape as rest shape: solved without gravity (the springback of the
+// JSON's split) it stays where it is drawn, where the same cable straight at rest springs
+// millimetres away; and its notes say why.
+TEST(RelaxKblCli, APreformedSegmentKeepsItsDrawnShape) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_preformed");
+  std::ofstream(out / "preformed.json") << R"({"preformed": ["Segment_?"]})";
+  const std::string input = Q(Kbl(std::string(kGearbox) + ".kbl"));
+  const auto plain = RunCablefit("relax " + input + " --out " + Q(out / "plain") + " --no-pictures");
+  const auto kept = RunCablefit("relax " + input + " --out " + Q(out / "kept") + " --config " +
+                                Q(out / "preformed.json") + " --no-pictures");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_EQ(kept.exit_code, 0) << kept.err;
+  const std::string file = std::string(kGearbox) + ".json";
+  const Json a = json::ReadJsonFile((out / "plain" / file).string());
+  const Json b = json::ReadJsonFile((out / "kept" / file).string());
+  const Json& straight = CableNamed(a, "Segment_1");
+  const Json& preformed = CableNamed(b, "Segment_1");
+  const double springs = straight.at("deviation").at("springback_max").get<double>();
+  const double stays = preformed.at("deviation").at("springback_max").get<double>();
+  std::printf("gearbox cable without gravity: %.2f mm off its drawing straight at rest, %.3f mm "
+              "preformed; with gravity %.2f / %.2f mm\n",
+              1e3 * springs, 1e3 * stays, 1e3 * straight.at("deviation").at("max").get<double>(),
+              1e3 * preformed.at("deviation").at("max").get<double>());
+  EXPECT_GT(springs, 1e-3);
+  EXPECT_LT(stays, 0.1 * springs);
+  bool noted = false;
+  for (const Json& n : preformed.at("notes"))
+    noted = noted || n.get<std::string>().find("pre-formed by harness.json") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
 }  // namespace
 }  // namespace cablefit

@@ -58,9 +58,12 @@ struct KblSegment {
   std::optional<double> virtual_length;      ///< [m]
   std::optional<double> cross_section_area;  ///< [m^2] of Cross_section_area_information
   double drawn_length = 0.0;                 ///< [m] of the evaluated centre curve(s)
-  /// Largest distance between the curve's ends and its nodes' positions [m] (0 where a node's
-  /// position is known only from this segment).
+  /// How far an end of the file's curve was from its node when it had to be drawn onto it
+  /// [m]; 0 when the curve reaches its nodes (or runs on past one and is cut there).
   double node_miss = 0.0;
+  /// An end of the centre curve was drawn onto its node (the file's curve does not reach it):
+  /// drawn_length is then no longer the file's, and Virtual_length is the segment's length.
+  bool end_drawn_to_node = false;
   std::vector<KblWire> wires;  ///< routed through this segment, each occurrence once
   std::vector<KblFixing> fixings;
   std::vector<KblProtection> protections;
@@ -76,9 +79,9 @@ struct KblHarness {
 
 /// Options of ReadKblFile.
 struct KblReadOptions {
-  /// A segment whose curve ends farther than this from its node (from another segment's end
-  /// at that node, or the node's own point) is refused [m]. Curves of the samples land within
-  /// 1e-5 m; a design tool's tolerance is about 1 mm.
+  /// A curve end farther than this from its node (the node's own point, or where the other
+  /// segments' curves meet) misses it and is cut or drawn onto it, with a note [m]. Curves of
+  /// the samples land within 1e-5 m; a design tool's tolerance is about 1 mm.
   double node_tolerance = 1e-3;
   /// Curve samples per knot span: the samples' degree-6 curves are one span each, and 256
   /// chords measure the gearbox's 625.09 mm within 5 um (24 chords: 0.5 mm short).
@@ -87,7 +90,8 @@ struct KblReadOptions {
 
 /// Reads a KBL 2.x file. Throws FileError naming the file and the element id for: not XML, a
 /// root other than KBL_container in a KBL 2.x namespace, a missing or unknown unit, a dangling
-/// id reference, a segment without centre curve or whose curve misses its nodes.
+/// id reference, a segment without centre curve. Curves that miss their nodes are made to
+/// reach them (see PlaceNodes in kbl_reader.cc, docs/kbl.md), each with a note.
 KblHarness ReadKblFile(const std::string& path, const KblReadOptions& options = {});
 
 /// Maximum size of a KBL file [bytes]: real harnesses are a few MB.

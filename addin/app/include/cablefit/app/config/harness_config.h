@@ -168,6 +168,9 @@ struct HarnessConfig {
   /// `rigid`, or none of `only` when `only` is given, is a rigid part (a pipe, a bar), not a
   /// cable: it is kept as a solid and never relaxed.
   std::vector<std::string> rigid, only;
+  /// Name patterns of pre-formed cables (a coiled cable, a moulded hose): still relaxed, but
+  /// their drawn shape is their rest shape, so they only sag from it under their weight.
+  std::vector<std::string> preformed;
   /// "solids": {"<name pattern>": {"min_clearance": m}}: the least surface distance cables must
   /// keep from the solids a pattern names; when several match a solid, the largest applies.
   std::vector<std::pair<std::string, double>> solid_clearances;
@@ -181,6 +184,8 @@ struct HarnessConfig {
   CableConfig For(const std::string& name) const;
   /// Why the cable `name` is a rigid part by `rigid` / `only`; empty when it is a cable.
   std::string RigidReason(const std::string& name) const;
+  /// Why the cable `name` keeps its drawn shape as rest shape (`preformed`); empty when not.
+  std::string PreformedReason(const std::string& name) const;
 };
 
 /// `base` with every field that `top` sets replaced by top's (supports: when top has any). The

@@ -26,8 +26,12 @@ struct RelaxGroup {
   };
   std::vector<Junction> junctions;
   std::vector<int> obstacles;  ///< drawing solids the group must stay out of
-  /// Solved by the network solver (junctions or contact), else as a single rod.
-  bool network() const { return !junctions.empty() || !obstacles.empty(); }
+  /// A cable of the group is pre-formed (HarnessConfig::preformed): its rest shape comes from
+  /// its drawn route, which only the network model carries.
+  bool preformed = false;
+  /// Solved by the network solver (junctions, contact or a pre-formed cable), else as a single
+  /// rod.
+  bool network() const { return !junctions.empty() || !obstacles.empty() || preformed; }
 };
 
 /// Groups the drawing's cables. `boxes` are the solids' bounding boxes. Throws InvalidInput

@@ -23,6 +23,10 @@ struct BranchSpec {
   std::vector<NaturalCurvatureSpec> natural_curvature;
   std::vector<PointLoadSpec> point_loads;
   Polyline route;
+  /// Pre-formed (a coiled cable, a moulded hose): the drawn route is its rest shape, so that
+  /// it only sags from it under its loads. Otherwise the rest shape is straight (plus
+  /// `natural_curvature`) and the drawing is only where the solve starts.
+  bool preformed = false;
   int start_junction = -1;  // index into NetworkSpec::junctions, -1 = free end
   int end_junction = -1;
 };
