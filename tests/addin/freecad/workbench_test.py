@@ -222,8 +222,10 @@ def test_colours():
     values = list(m.SegmentDeviations)
     check(max(values) <= m.ScaleMax + 1e-12 and min(values) >= 0, "segment values on the scale")
     check(values[0] < 0.2 * max(values), "the clamped start barely deviates")
-    check(abs(m.Shape.BoundBox.XLength - c.Shape.BoundBox.XLength) < 0.2 * c.DiameterUsed.Value,
-          "the deviation map covers the cable")
+    # Tight boxes: a rational pipe surface's control net (the box FreeCAD gives by default)
+    # reaches about 0.4 radii beyond the tube.
+    check(abs(m.Shape.optimalBoundingBox().XLength - c.Shape.optimalBoundingBox().XLength) <
+          0.2 * c.DiameterUsed.Value, "the deviation map covers the cable")
     path = os.path.join(out_dir("colours"), "colours.FCStd")
     doc.saveAs(path)
     FreeCAD.closeDocument(doc.Name)
