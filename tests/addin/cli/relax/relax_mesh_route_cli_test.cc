@@ -37,28 +37,39 @@ Vec3 Tangent(const json::Json& cable, size_t support) {
   return Vec3(t.at(0).get<double>(), t.at(1).get<double>(), t.at(2).get<double>());
 }
 
-// The distance between the routes relaxed from `sides`-gon STL rings every `ring` [m] and from
-// the exact STEP tube.
-double StlApartFromStep(const fs::path& dir, int sides, double ring) {
-  const double diameter = 0.008;
+constexpr double kDiameter = 0.008;
+
+// Writes the exact tube as dir/sag.step, relaxes it and dir/`stl`, and returns how far apart the
+// two relaxed routes are [m]; `stl` (the STL cable's JSON) receives the mesh's cable.
+double ApartFromStep(const fs::path& dir, const std::string& stl_name, json::Json* stl) {
   HarnessDrawing drawing;
   DrawnCable cable;
   cable.name = "sag";
   cable.centreline = testing::SampleCurve(Sag, 401);
-  cable.diameter = diameter;
+  cable.diameter = kDiameter;
   drawing.cables.push_back(cable);
-  WriteRelaxedStep((dir / "sag.step").string(), drawing, {RelaxedCable{0, cable.centreline, diameter}});
+  WriteRelaxedStep((dir / "sag.step").string(), drawing, {RelaxedCable{0, cable.centreline, kDiameter}});
+  const json::Json step = Relaxed(dir / "sag.step");
+  *stl = Relaxed(dir / stl_name);
+  EXPECT_NEAR(stl->at("diameter").get<double>(), step.at("diameter").get<double>(), 1e-3 * kDiameter);
+  for (size_t k = 0; k < 2; ++k) {
+    const Vec3 t = Tangent(step, k), u = Tangent(*stl, k);
+    EXPECT_LT(std::acos(std::min(1.0, t.dot(u))), 0.5e-3) << "support " << k;
+  }
+  return std::max(testing::FarthestFromCentreline(step, *stl),
+                  testing::FarthestFromCentreline(*stl, step));
+}
+
+// The same for `sides`-gon STL rings every `ring` [m] of our own.
+double StlApartFromStep(const fs::path& dir, int sides, double ring) {
   const int rings = static_cast<int>(std::lround(0.41 / ring)) + 1;
   WriteMeshFile((dir / "sag.stl").string(),
-                SweepTubeMesh(testing::SampleCurve(Sag, rings), diameter, sides), 0.001);
-  const json::Json step = Relaxed(dir / "sag.step"), stl = Relaxed(dir / "sag.stl");
-  EXPECT_NEAR(stl.at("diameter").get<double>(), step.at("diameter").get<double>(), 1e-3 * diameter);
-  const double apart = std::max(testing::FarthestFromCentreline(step, stl),
-                                testing::FarthestFromCentreline(stl, step));
+                SweepTubeMesh(testing::SampleCurve(Sag, rings), kDiameter, sides), 0.001);
+  json::Json stl;
+  const double apart = ApartFromStep(dir, "sag.stl", &stl);
   std::printf("%d sides (chord sag %.3f mm), rings every %.0f mm: STL vs STEP relaxed route %.4f "
-              "mm apart; diameters %.4f / %.4f mm\n",
-              sides, 0.5e3 * diameter * (1 - std::cos(M_PI / sides)), 1e3 * ring, 1e3 * apart,
-              1e3 * stl.at("diameter").get<double>(), 1e3 * step.at("diameter").get<double>());
+              "mm apart\n",
+              sides, 0.5e3 * kDiameter * (1 - std::cos(M_PI / sides)), 1e3 * ring, 1e3 * apart);
   return apart;
 }
 
@@ -72,26 +83,12 @@ TEST(RelaxMeshRoute, AnotherMeshersCoarseExportRelaxesWhereTheExactTubeDoes) {
   // no rings, long thin facets, fan caps. The end tangents come from the caps' normals; taken
   // from the last slice centres they were 3-5 mrad off and the relaxed routes 0.08-0.14 mm apart.
   const fs::path dir = testing::FreshTempDir("relax_mesh_route_occt");
-  const double diameter = 0.008;
-  HarnessDrawing drawing;
-  DrawnCable cable;
-  cable.name = "sag";
-  cable.centreline = testing::SampleCurve(Sag, 401);
-  cable.diameter = diameter;
-  drawing.cables.push_back(cable);
-  WriteRelaxedStep((dir / "sag.step").string(), drawing, {RelaxedCable{0, cable.centreline, diameter}});
   fs::copy_file(testing::SourceDir() / "tests/data/mesh/sag_tube_0.3mm_deflection.stl",
                 dir / "sag_mesh.stl");
-  const json::Json step = Relaxed(dir / "sag.step"), stl = Relaxed(dir / "sag_mesh.stl");
-  EXPECT_NEAR(stl.at("diameter").get<double>(), step.at("diameter").get<double>(), 1e-3 * diameter);
-  const double apart = std::max(testing::FarthestFromCentreline(step, stl),
-                                testing::FarthestFromCentreline(stl, step));
+  json::Json stl;
+  const double apart = ApartFromStep(dir, "sag_mesh.stl", &stl);
   std::printf("FreeCAD 0.3 mm mesh vs STEP relaxed route: %.4f mm apart\n", 1e3 * apart);
   EXPECT_LT(apart, 0.02e-3);
-  for (size_t k = 0; k < 2; ++k) {
-    const Vec3 a = Tangent(step, k), b = Tangent(stl, k);
-    EXPECT_LT(std::acos(std::min(1.0, a.dot(b))), 0.5e-3) << "support " << k;
-  }
 }
 
 TEST(RelaxMeshRoute, ACoarselyTessellatedTubeRelaxesWhereTheExactTubeDoes) {
