@@ -108,6 +108,13 @@ TEST(RodEnergyTest, GradientAndHessianMatchFiniteDifferences) {
   state.drawn_factor = 0.6;
   state.natural_factor = 0.4;
   ExpectDerivativesMatchFiniteDifferences(model, state, lambda);
+  // A junction's rest rotation on some edges (what a network's branch points carry).
+  RodModel turned = model;
+  for (size_t k = 1; k < turned.edges.size(); k += 3) {
+    turned.edges[k].has_rest = true;
+    turned.edges[k].rest = Eigen::Vector4d(1.0, nd(rng), nd(rng), nd(rng)).normalized();
+  }
+  ExpectDerivativesMatchFiniteDifferences(turned, state, lambda);
 }
 
 }  // namespace
