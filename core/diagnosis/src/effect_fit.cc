@@ -69,10 +69,11 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     int branch = 0;
   };
   std::atomic<int> forward_solves{0}, lm_iterations{0};  // sums: the same on any thread count
-  auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations) {
+  auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations,
+                 bool patient_start = false) {
     bool first = true;
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
-      const bool patient = first && options.patient_start;
+      const bool patient = first && (options.patient_start || patient_start);
       first = false;
       return Residual(ctx, &r->sim, m.apply(x), res, nullptr, patient);
     };
@@ -88,12 +89,14 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   // end in the same place are one basin: the survivors are distinct ones. Every run owns its
   // simulator, so the runs go in parallel and are collected in start order.
   const bool screen = m.starts.size() > 2;
+  const bool coarse = screen && options.screen_bases != nullptr;
+  const std::vector<RodSimulator>& screen_sims = coarse ? *options.screen_bases : bases;
   const int count = static_cast<int>(bases.size() * m.starts.size());
   std::vector<Run> started(static_cast<size_t>(count));
   ParallelFor(count, threads, [&](int j) {
     const size_t b = static_cast<size_t>(j) / m.starts.size();
     Run& r = started[static_cast<size_t>(j)];
-    r = Run{bases[b], {}, static_cast<int>(b)};
+    r = Run{screen_sims[b], {}, static_cast<int>(b)};
     run(&r, m.starts[static_cast<size_t>(j) % m.starts.size()],
         screen ? options.start_iterations : max_iterations);
   });
@@ -116,9 +119,19 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     ParallelFor(static_cast<int>(runs.size()), threads, [&](int j) {
       Run& r = runs[static_cast<size_t>(j)];
       const LmResult screened = r.lm;
+      if (coarse) {
+        // On the fine model, which the coarse one only approximates: its first solve may need
+        // the continuation, and a coarse cost is no fallback for a fine one.
+        r.sim = bases[static_cast<size_t>(r.branch)];
+        run(&r, Eigen::VectorXd(screened.x), max_iterations, /*patient=*/true);
+        return;
+      }
       run(&r, Eigen::VectorXd(r.lm.x), max_iterations);
       if (!r.lm.ok || r.lm.cost > screened.cost) r.lm = screened;
     });
+    if (coarse)
+      runs.erase(std::remove_if(runs.begin(), runs.end(), [](const Run& r) { return !r.lm.ok; }),
+                 runs.end());
     std::stable_sort(runs.begin(), runs.end(), by_cost);
   }
   // A best run stopped by its iteration limit while still descending is carried on: a fit that

@@ -56,6 +56,10 @@ struct FitOptions {
   /// With more than two starts, each start runs this many iterations first and only the three
   /// best distinct ones are carried on.
   int start_iterations = 4;
+  /// Where the starts are screened (one simulator per base, same order), when not the bases
+  /// themselves: the coarse level ranks starts at a third of the cost, and the kept ones are
+  /// carried on from where it left them on the bases.
+  const std::vector<RodSimulator>* screen_bases = nullptr;
 };
 
 /// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the

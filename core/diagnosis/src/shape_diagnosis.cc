@@ -255,8 +255,9 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
       BuildEffectModels(nominal, branches.reaction_moment, ctx.points, ctx.s);
   std::vector<Fit> fits;
   for (size_t i = 0; i < models.size(); ++i) {
-    fits.push_back(FitEffect(ctx, branches.bases, models[i],
-                             {options.max_iterations, options.threads, true, true}));
+    FitOptions fo{options.max_iterations, options.threads, true, true};
+    fo.screen_bases = &branches.coarse;
+    fits.push_back(FitEffect(ctx, branches.bases, models[i], fo));
     progress(0.05 + 0.55 * (i + 1) / models.size(), ToString(models[i].effect));
     out.cost.forward_solves += fits.back().forward_solves;
     out.cost.lm_iterations += fits.back().lm_iterations;
