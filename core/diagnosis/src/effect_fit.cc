@@ -60,6 +60,21 @@ double EvaluateFitCost(const FitContext& ctx, RodSimulator sim, const RodSpec& s
   return cost;
 }
 
+FitPoint EvaluateFitPoint(const FitContext& ctx, RodSimulator sim, const EffectModel& model,
+                          const Eigen::VectorXd& x) {
+  FitPoint p{std::move(sim), {}, {}, 1, false};
+  if (!Residual(ctx, &p.sim, model.apply(x), &p.offsets)) return p;
+  // The differences are solved from a copy: the point's simulator stays warm at x itself.
+  RodSimulator moving = p.sim;
+  auto fn = [&](const Eigen::VectorXd& xp, Eigen::VectorXd* r) {
+    return Residual(ctx, &moving, model.apply(xp), r);
+  };
+  LmOptions lm;
+  p.ok = DifferenceJacobian(fn, x, p.offsets, model.scale, lm.relative_step, {},
+                            &p.forward_solves, &p.jacobian);
+  return p;
+}
+
 Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, const EffectModel& m,
               const FitOptions& options) {
   const int max_iterations = options.max_iterations, threads = options.threads;
@@ -70,7 +85,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   };
   std::atomic<int> forward_solves{0}, lm_iterations{0};  // sums: the same on any thread count
   auto run = [&](Run* r, const Eigen::VectorXd& x0, int iterations,
-                 bool patient_start = false) {
+                 bool patient_start = false, const LmStart* start = nullptr) {
     bool first = true;
     auto fn = [&](const Eigen::VectorXd& x, Eigen::VectorXd* res) {
       const bool patient = first && (options.patient_start || patient_start);
@@ -80,7 +95,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     LmOptions opt;
     opt.max_iterations = iterations;
     opt.max_broyden_updates = kBroydenUpdates;
-    r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt);
+    r->lm = MinimiseLeastSquares(fn, x0, m.scale, opt, start);
     forward_solves += r->lm.evaluations;
     lm_iterations += r->lm.iterations;
   };
@@ -95,10 +110,13 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   std::vector<Run> started(static_cast<size_t>(count));
   ParallelFor(count, threads, [&](int j) {
     const size_t b = static_cast<size_t>(j) / m.starts.size();
+    const int s = static_cast<int>(static_cast<size_t>(j) % m.starts.size());
     Run& r = started[static_cast<size_t>(j)];
     r = Run{screen_sims[b], {}, static_cast<int>(b)};
-    run(&r, m.starts[static_cast<size_t>(j) % m.starts.size()],
-        screen ? options.start_iterations : max_iterations);
+    std::optional<LmStart> known;
+    if (options.known_start) known = options.known_start(s, &r.sim);
+    run(&r, m.starts[static_cast<size_t>(s)], screen ? options.start_iterations : max_iterations,
+        false, known ? &*known : nullptr);
   });
   std::vector<Run> runs;
   for (Run& r : started)
@@ -108,7 +126,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
   if (screen) {
     std::vector<Run> kept;
     for (Run& r : runs) {
-      if (kept.size() >= 3) break;
+      if (static_cast<int>(kept.size()) >= options.kept_starts) break;
       bool same = false;
       for (const Run& k : kept)
         same = same || (r.branch == k.branch &&

@@ -4,10 +4,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "cablefit/core/base/geometry_types.h"
 #include "cablefit/core/solver/rod_simulation.h"
+#include "levenberg_marquardt.h"
 #include "shape_effects.h"
 
 namespace cablefit {
@@ -53,14 +56,34 @@ struct FitOptions {
   /// starts come from fits that were solved already: a start that a plain Newton solve cannot
   /// reach is then dropped at once instead of being continued for seconds.
   bool patient_start = true;
-  /// With more than two starts, each start runs this many iterations first and only the three
-  /// best distinct ones are carried on.
+  /// With more than two starts, each start runs this many iterations first and only the
+  /// `kept_starts` best distinct ones are carried on.
   int start_iterations = 4;
+  int kept_starts = 3;
   /// Where the starts are screened (one simulator per base, same order), when not the bases
   /// themselves: the coarse level ranks starts at a third of the cost, and the kept ones are
   /// carried on from where it left them on the bases.
   const std::vector<RodSimulator>* screen_bases = nullptr;
+  /// Starts whose state is known already (a pair started with one effect at its single fit and
+  /// the other at zero strength: the single fit's solve, offsets and Jacobian are the pair's).
+  /// Given a start's index and its run's simulator, it sets the simulator warm at the start and
+  /// returns the start's offsets and known Jacobian columns; nullopt: the start runs cold.
+  std::function<std::optional<LmStart>(int start, RodSimulator* sim)> known_start = nullptr;
 };
+
+/// A model's state at x: solved warm from `sim` (without continuation), the thinned points'
+/// offsets from it and their Jacobian by forward differences.
+struct FitPoint {
+  RodSimulator sim;          // warm at x
+  Eigen::VectorXd offsets;   // 3n [m]
+  Eigen::MatrixXd jacobian;  // 3n x x.size() [m per parameter unit]
+  int forward_solves = 0;
+  bool ok = false;           // false: x or a difference could not be solved
+};
+
+/// `model` at `x` from `sim`.
+FitPoint EvaluateFitPoint(const FitContext& ctx, RodSimulator sim,
+                                         const EffectModel& model, const Eigen::VectorXd& x);
 
 /// The best fit of `model`, started from every simulator in `bases` (one per equilibrium of the
 /// nominal, each warm).

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 #include <utility>
 
 #include "cablefit/core/base/parallel_for.h"
@@ -35,6 +37,13 @@ Eigen::VectorXd Concat(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return x;
 }
 
+// A pair's start; `fitted_part` (0 or 1) when that part sits at its single fit and the other
+// one is neutral: the start's solve, offsets and most of its Jacobian are the single fit's.
+struct PairStart {
+  Eigen::VectorXd x;
+  int fitted_part = -1;
+};
+
 // Where a pair starts: from both single fits (each absorbed some of the other cause, so the sum
 // overshoots, but it often lies in the right basin), and from every start of either effect with
 // the other at its single fit: a single fit that absorbed the other cause can sit in the wrong
@@ -42,18 +51,51 @@ Eigen::VectorXd Concat(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 // or where its effect does nothing and has no gradient (a clamp compliance fitted to zero). The
 // same effect twice (two curvature spans, two contacts) starts its second copy at the effect's
 // starts away from the fitted first.
-std::vector<Eigen::VectorXd> PairStarts(const EffectModel& ma, const Fit& fa, const EffectModel& mb,
-                                        const Fit& fb, bool same_model, double length) {
-  std::vector<Eigen::VectorXd> starts;
+std::vector<PairStart> PairStarts(const EffectModel& ma, const Fit& fa, const EffectModel& mb,
+                                  const Fit& fb, bool same_model, double length) {
+  std::vector<PairStart> starts;
+  auto with_a_fitted = [&](const Eigen::VectorXd& s) {
+    starts.push_back({Concat(fa.x, s), mb.is_neutral(s) ? 0 : -1});
+  };
   if (same_model) {
     for (const Eigen::VectorXd& s : mb.starts)
-      if (std::abs(s[0] - fa.x[0]) > 0.15 * length) starts.push_back(Concat(fa.x, s));
+      if (std::abs(s[0] - fa.x[0]) > 0.15 * length) with_a_fitted(s);
     return starts;
   }
-  starts.push_back(Concat(fa.x, fb.x));
-  for (const Eigen::VectorXd& s : mb.starts) starts.push_back(Concat(fa.x, s));
-  for (const Eigen::VectorXd& s : ma.starts) starts.push_back(Concat(s, fb.x));
+  starts.push_back({Concat(fa.x, fb.x), -1});
+  for (const Eigen::VectorXd& s : mb.starts) with_a_fitted(s);
+  for (const Eigen::VectorXd& s : ma.starts)
+    starts.push_back({Concat(s, fb.x), ma.is_neutral(s) ? 1 : -1});
   return starts;
+}
+
+// A single fit's state on the coarse level, from one of the nominal's equilibria.
+struct PointKey {
+  int single = 0;
+  int branch = 0;
+  bool operator<(const PointKey& o) const {
+    return single != o.single ? single < o.single : branch < o.branch;
+  }
+};
+
+// The start of pair `m` with part `fitted` at its single fit `point` and the other part
+// neutral: the pair's offsets are the single's, the fitted part's Jacobian columns are the
+// single's, the neutral part's non-amplitude columns are zero (where the effect has no strength
+// its place does nothing); only its amplitude columns need differences.
+LmStart KnownPairStart(const EffectModel& m, const std::vector<EffectModel>& singles, int fitted,
+                       const FitPoint& point) {
+  const int n = static_cast<int>(m.scale.size());
+  LmStart st;
+  st.residual = point.offsets;
+  st.jacobian = Eigen::MatrixXd::Zero(point.offsets.size(), n);
+  st.known_columns.assign(static_cast<size_t>(n), true);
+  const int off = m.part_offsets[static_cast<size_t>(fitted)];
+  st.jacobian.middleCols(off, point.jacobian.cols()) = point.jacobian;
+  const int other = 1 - fitted;
+  const EffectModel& mo = singles[static_cast<size_t>(m.parts[static_cast<size_t>(other)])];
+  for (int i : mo.amplitudes)
+    st.known_columns[static_cast<size_t>(m.part_offsets[static_cast<size_t>(other)] + i)] = false;
+  return st;
 }
 
 }  // namespace
@@ -65,6 +107,7 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
                              const PairSearchOptions& options) {
   const std::vector<int> members = Members(singles, single_fits, nominal);
   PairSearch out;
+  std::vector<std::vector<int>> fitted_parts;  // per pair and start
   for (size_t i = 0; i < members.size(); ++i)
     for (size_t j = i; j < members.size(); ++j) {
       const int a = members[i], b = members[j];
@@ -77,28 +120,60 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
       const bool a_first = fa.cost <= fb.cost;
       const int first = a_first ? a : b, second = a_first ? b : a;
       EffectModel m = CombineEffects(singles, first, second);
-      const Fit& f1 = a_first ? fa : fb;
-      const Fit& f2 = a_first ? fb : fa;
-      m.starts = PairStarts(singles[static_cast<size_t>(first)], f1,
-                            singles[static_cast<size_t>(second)], f2, a == b, nominal.length);
+      const std::vector<PairStart> starts =
+          PairStarts(singles[static_cast<size_t>(first)], a_first ? fa : fb,
+                     singles[static_cast<size_t>(second)], a_first ? fb : fa, a == b,
+                     nominal.length);
+      fitted_parts.emplace_back();
+      for (const PairStart& s : starts) {
+        m.starts.push_back(s.x);
+        fitted_parts.back().push_back(s.fitted_part);
+      }
       out.models.push_back(std::move(m));
     }
-  // 1. Every pair screened on the coarse level: a few iterations from its starts, the pairs in
-  //    parallel.
   const int n = static_cast<int>(out.models.size());
-  out.fits.resize(static_cast<size_t>(n));
   auto branch_of = [&](const EffectModel& m) {
     return single_fits[static_cast<size_t>(m.parts[0])].branch;
   };
+  // 1. The single fits' states on the coarse level, on the branches of the pairs they start.
+  std::map<PointKey, FitPoint> points;
+  for (int k = 0; k < n; ++k)
+    for (int fitted : fitted_parts[static_cast<size_t>(k)])
+      if (fitted >= 0) {
+        const EffectModel& m = out.models[static_cast<size_t>(k)];
+        points[{m.parts[static_cast<size_t>(fitted)], branch_of(m)}];
+      }
+  std::vector<std::pair<const PointKey, FitPoint>*> todo;
+  for (auto& entry : points) todo.push_back(&entry);
+  ParallelFor(static_cast<int>(todo.size()), options.threads, [&](int t) {
+    const PointKey& key = todo[static_cast<size_t>(t)]->first;
+    todo[static_cast<size_t>(t)]->second =
+        EvaluateFitPoint(ctx, coarse[static_cast<size_t>(key.branch)],
+                         singles[static_cast<size_t>(key.single)],
+                         single_fits[static_cast<size_t>(key.single)].x);
+  });
+  for (const auto& [key, point] : points) out.forward_solves += point.forward_solves;
+  // 2. Every pair screened on the coarse level: a few iterations from its starts, the pairs in
+  //    parallel; a start beside a single fit begins where that fit's state is.
+  out.fits.resize(static_cast<size_t>(n));
   ParallelFor(n, options.threads, [&](int k) {
     const EffectModel& m = out.models[static_cast<size_t>(k)];
+    const std::vector<int>& fitted = fitted_parts[static_cast<size_t>(k)];
+    FitOptions screen{options.screen_iterations, 1, /*polish=*/false, /*patient_start=*/false,
+                      options.start_iterations};
+    screen.known_start = [&](int s, RodSimulator* sim) -> std::optional<LmStart> {
+      const int part = fitted[static_cast<size_t>(s)];
+      if (part < 0) return std::nullopt;
+      const FitPoint& point = points.at({m.parts[static_cast<size_t>(part)], branch_of(m)});
+      if (!point.ok) return std::nullopt;
+      *sim = point.sim;
+      return KnownPairStart(m, singles, part, point);
+    };
     Fit& f = out.fits[static_cast<size_t>(k)];
-    f = FitEffect(ctx, {coarse[static_cast<size_t>(branch_of(m))]}, m,
-                  {options.screen_iterations, 1, /*polish=*/false, /*patient_start=*/false,
-                   options.start_iterations});
+    f = FitEffect(ctx, {coarse[static_cast<size_t>(branch_of(m))]}, m, screen);
     f.branch = branch_of(m);
   });
-  // 2. The most promising ones to their optimum on the fine model, from where the screening
+  // 3. The most promising ones to their optimum on the fine model, from where the screening
   //    left them.
   std::vector<int> order(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) order[static_cast<size_t>(k)] = k;
@@ -135,6 +210,40 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
   out.models = std::move(models);
   out.fits = std::move(fits);
   return out;
+}
+
+void DeepenPairSearch(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                      const std::vector<RodSimulator>& coarse, PairSearch* search,
+                      const PairSearchOptions& options) {
+  std::vector<int> order(search->fits.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&](int p, int q) {
+    return search->fits[static_cast<size_t>(p)].cost < search->fits[static_cast<size_t>(q)].cost;
+  });
+  order.resize(std::min(order.size(), static_cast<size_t>(options.deep_refits)));
+  std::vector<Fit> deep(order.size());
+  ParallelFor(static_cast<int>(order.size()), options.threads, [&](int r) {
+    const size_t k = static_cast<size_t>(order[static_cast<size_t>(r)]);
+    const size_t branch = static_cast<size_t>(search->fits[k].branch);
+    const std::vector<RodSimulator> screen = {coarse[branch]};
+    FitOptions fo{options.max_iterations, 1, /*polish=*/true, /*patient_start=*/false,
+                  2 * options.screen_iterations};
+    fo.kept_starts = 6;
+    fo.screen_bases = &screen;
+    Fit& f = deep[static_cast<size_t>(r)];
+    f = FitEffect(ctx, {bases[branch]}, search->models[k], fo);
+    f.branch = static_cast<int>(branch);
+  });
+  for (size_t r = 0; r < order.size(); ++r) {
+    Fit& old = search->fits[static_cast<size_t>(order[r])];
+    search->forward_solves += deep[r].forward_solves;
+    search->lm_iterations += deep[r].lm_iterations;
+    if (deep[r].ok && deep[r].cost < old.cost) {
+      deep[r].forward_solves += old.forward_solves;
+      deep[r].lm_iterations += old.lm_iterations;
+      old = std::move(deep[r]);
+    }
+  }
 }
 
 }  // namespace cablefit

@@ -23,6 +23,7 @@ struct PairSearchOptions {
   int screen_iterations = 6;  // ... of every pair's screening
   int start_iterations = 4;   // ... of each start before the screening keeps the best three
   int refits = 8;             // how many of the best screened pairs are carried to the optimum
+  int deep_refits = 3;        // how many of the best pairs DeepenPairSearch fits again
   int threads = 1;            // the pairs run in parallel (same result on any count)
 };
 
@@ -40,5 +41,13 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
                              const std::vector<RodSimulator>& coarse,
                              const RodSpec& nominal, const std::vector<EffectModel>& singles,
                              const std::vector<Fit>& single_fits, const PairSearchOptions& options);
+
+/// Where even the best pair leaves more than the noise, its screening may have left the true
+/// pair in a wrong basin (the few iterations per start rank basins only roughly): the
+/// `deep_refits` best pairs of `search` are fitted again, every start carried further and more
+/// of them kept, on the fine level. A fit is replaced where the new one is better.
+void DeepenPairSearch(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                      const std::vector<RodSimulator>& coarse, PairSearch* search,
+                      const PairSearchOptions& options);
 
 }  // namespace cablefit

@@ -4,17 +4,14 @@
 #include <cmath>
 
 namespace cablefit {
-namespace {
-
-// Forward differences (backward where the forward point cannot be evaluated); false when
-// neither can.
-bool DifferenceJacobian(
-    const std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>& residual,
-    const Eigen::VectorXd& x, const Eigen::VectorXd& r, const Eigen::VectorXd& scale,
-    double relative_step, int* evaluations, Eigen::MatrixXd* jac) {
+bool DifferenceJacobian(const ResidualFunction& residual, const Eigen::VectorXd& x,
+                        const Eigen::VectorXd& r, const Eigen::VectorXd& scale,
+                        double relative_step, const std::vector<bool>& skip, int* evaluations,
+                        Eigen::MatrixXd* jac) {
   const int n = static_cast<int>(x.size());
-  jac->resize(r.size(), n);
+  if (jac->rows() != r.size() || jac->cols() != n) jac->resize(r.size(), n);
   for (int k = 0; k < n; ++k) {
+    if (!skip.empty() && skip[static_cast<size_t>(k)]) continue;
     Eigen::VectorXd xp = x;
     const double h = relative_step * scale[k];
     xp[k] += h;
@@ -32,16 +29,22 @@ bool DifferenceJacobian(
   return true;
 }
 
-}  // namespace
-
-LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>& residual,
-                              const Eigen::VectorXd& x0, const Eigen::VectorXd& scale,
-                              const LmOptions& options) {
+LmResult MinimiseLeastSquares(const ResidualFunction& residual, const Eigen::VectorXd& x0,
+                              const Eigen::VectorXd& scale, const LmOptions& options,
+                              const LmStart* start) {
   LmResult res;
   res.x = x0;
   Eigen::VectorXd r;
-  ++res.evaluations;
-  if (!residual(res.x, &r)) return res;
+  Eigen::MatrixXd jac;
+  std::vector<bool> known;
+  if (start) {
+    r = start->residual;
+    jac = start->jacobian;
+    known = start->known_columns;
+  } else {
+    ++res.evaluations;
+    if (!residual(res.x, &r)) return res;
+  }
   res.ok = true;
   res.cost = 0.5 * r.squaredNorm();
   const int n = static_cast<int>(x0.size());
@@ -50,7 +53,6 @@ LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, E
     return res;
   }
   double mu = -1.0, nu = 2.0;
-  Eigen::MatrixXd jac;
   // Between difference Jacobians the Jacobian is carried by Broyden's rank-one update (each
   // difference Jacobian costs one forward solve per parameter; an update costs none). A stop is
   // only believed on a fresh difference Jacobian.
@@ -59,8 +61,8 @@ LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, E
   for (int it = 0; it < options.max_iterations; ++it) {
     res.iterations = it + 1;
     if (!fresh && (it == 0 || updates >= options.max_broyden_updates)) {
-      if (!DifferenceJacobian(residual, res.x, r, scale, options.relative_step, &res.evaluations,
-                              &jac))
+      if (!DifferenceJacobian(residual, res.x, r, scale, options.relative_step,
+                              it == 0 ? known : std::vector<bool>{}, &res.evaluations, &jac))
         break;
       fresh = true;
       updates = 0;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <vector>
 
 namespace cablefit {
 
@@ -28,11 +29,31 @@ struct LmResult {
   bool converged = false;
 };
 
+/// What is known at the start point already (e.g. from a fit of part of the model): its
+/// residual, and those Jacobian columns that need no difference.
+struct LmStart {
+  Eigen::VectorXd residual;     // m
+  Eigen::MatrixXd jacobian;     // m x n, read where `known_columns`
+  std::vector<bool> known_columns;  // n
+};
+
+using ResidualFunction = std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>;
+
+/// The forward-difference Jacobian (m x n) of `residual` at x, where it is r (m), with steps
+/// relative_step * scale (backward where the forward point cannot be evaluated); columns whose
+/// `skip` entry is true (skip may be empty) are left as they are. False when a column can be
+/// evaluated neither way. Counts the evaluations in `evaluations`.
+bool DifferenceJacobian(const ResidualFunction& residual, const Eigen::VectorXd& x,
+                        const Eigen::VectorXd& r, const Eigen::VectorXd& scale,
+                        double relative_step, const std::vector<bool>& skip, int* evaluations,
+                        Eigen::MatrixXd* jac);
+
 /// `residual(x, &r)` returns false when the model cannot be evaluated at x (e.g. the solver did
 /// not converge); such points are treated as infinitely bad. `scale` gives each parameter's
 /// typical size (finite-difference steps and damping are scaled by it).
-LmResult MinimiseLeastSquares(const std::function<bool(const Eigen::VectorXd&, Eigen::VectorXd*)>& residual,
-                              const Eigen::VectorXd& x0, const Eigen::VectorXd& scale,
-                              const LmOptions& options);
+/// With `start`, x0's residual is not evaluated and only its unknown Jacobian columns are.
+LmResult MinimiseLeastSquares(const ResidualFunction& residual, const Eigen::VectorXd& x0,
+                              const Eigen::VectorXd& scale, const LmOptions& options,
+                              const LmStart* start = nullptr);
 
 }  // namespace cablefit

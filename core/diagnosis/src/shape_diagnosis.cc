@@ -274,6 +274,13 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     po.threads = options.threads;
     PairSearch pairs = SearchEffectPairs(ctx, branches.bases, branches.coarse, nominal, models,
                                          fits, po);
+    std::vector<EffectModel> all = models;
+    std::vector<Fit> all_fits = fits;
+    all.insert(all.end(), pairs.models.begin(), pairs.models.end());
+    all_fits.insert(all_fits.end(), pairs.fits.begin(), pairs.fits.end());
+    double pair_residual = 0.0;
+    if (NeedsPairSearch(all, all_fits, n, noise_sigma, options.noise_allowance, &pair_residual))
+      DeepenPairSearch(ctx, branches.bases, branches.coarse, &pairs, po);
     out.cost.forward_solves += pairs.forward_solves;
     out.cost.lm_iterations += pairs.lm_iterations;
     for (size_t i = 0; i < pairs.models.size(); ++i) {

@@ -79,6 +79,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.physical_parameters = 4;
     // x = (centre, width, kappa1, kappa2)
     m.scale = scales({0.02 * L, 0.02 * L, 1.0, 1.0});
+    m.amplitudes = {2, 3};
     for (int i = 0; i < 6; ++i)
       for (double w : {L / 8, L / 3}) {
         Eigen::VectorXd x(4);
@@ -113,6 +114,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.physical_parameters = 2;
     // x = (rot_d1, rot_d2)
     m.scale = scales({0.02, 0.02});
+    m.amplitudes = {0, 1};
     m.starts = {Eigen::VectorXd::Zero(2)};
     // The rotation's axes are the nominal clamp's, also when another effect (a twist preload)
     // has turned the clamp already, so that the parameters mean the same in every combination.
@@ -146,6 +148,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.physical_parameters = 1;
     // x = (log_ratio)
     m.scale = scales({0.05});
+    m.amplitudes = {0};
     m.starts = {Eigen::VectorXd::Zero(1)};
     m.change = [](const Eigen::VectorXd& x, RodSpec* s) {
       s->material.linear_density *= std::exp(x[0]);
@@ -198,6 +201,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     // x = (s, f_up, f_side)
     const double w = std::max(1e-6, nominal.material.linear_density * nominal.gravity.norm() * L);
     m.scale = scales({0.01 * L, 0.05 * w, 0.05 * w});
+    m.amplitudes = {1, 2};
     for (int i = 0; i < 8; ++i) {
       Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
       x[0] = L * (i + 0.5) / 8;
@@ -238,6 +242,7 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
     m.physical_parameters = 1;
     // x = (angle)
     m.scale = scales({0.05});
+    m.amplitudes = {0};
     for (double a : {0.0, 0.8, -0.8, 1.6, -1.6, 2.4, -2.4})
       m.starts.push_back(Eigen::VectorXd::Constant(1, a));
     m.change = [=](const Eigen::VectorXd& x, RodSpec* s) { RotateClampAboutTangent(k, x[0], s); };
@@ -305,6 +310,13 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
   const auto base = std::make_shared<const RodSpec>(nominal);
   for (EffectModel& m : models) m.base = base;
   return models;
+}
+
+bool EffectModel::is_neutral(const Eigen::VectorXd& x) const {
+  if (amplitudes.empty()) return false;
+  for (int i : amplitudes)
+    if (x[i] != 0.0) return false;
+  return true;
 }
 
 RodSpec EffectModel::apply(const Eigen::VectorXd& x) const {

@@ -44,6 +44,10 @@ struct EffectModel {
   std::optional<int> clamp;             // clamp (support) index for clamp effects
   Eigen::VectorXd scale;                // typical size of every parameter
   std::vector<Eigen::VectorXd> starts;  // starting physical parameters
+  /// The parameters that set the effect's strength: where all of them are zero the model is
+  /// the spec it changes, and the other parameters (where, how wide) do nothing. Empty when no
+  /// parameter value is neutral.
+  std::vector<int> amplitudes;
   /// Parameters -> the change made to a spec: the nominal, or, when effects act together, the
   /// spec another effect has changed already.
   std::function<void(const Eigen::VectorXd&, RodSpec*)> change;
@@ -61,6 +65,8 @@ struct EffectModel {
   /// The changed spec.
   RodSpec apply(const Eigen::VectorXd& x) const;
   bool is_combination() const { return !parts.empty(); }
+  /// x changes nothing (every amplitude zero).
+  bool is_neutral(const Eigen::VectorXd& x) const;
 };
 
 /// Rotates support `clamp`'s normal by `angle` [rad] about its tangent (right-hand rule).
