@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "cablefit/core/solver/centerline_sampling.h"
+#include "cablefit/core/solver/rod_simulation.h"
 #include "two_clamp_setup.h"
 
 namespace cablefit {
@@ -159,6 +161,48 @@ TEST(ShapeEffectsTest, ClampEffectsAreDescribedAsApplied) {
     EXPECT_NEAR(d.parameters.at("alternative_angle"), -0.5, 1e-12);
     EXPECT_FALSE(d.parameters.count("torque"));  // no solution to read it from
   }
+}
+
+// The largest distance between two solved centrelines at the same arc lengths [m] (a point
+// load is an element boundary: the two may have different nodes).
+double Distance(const SimulationResult& a, const SimulationResult& b, double length) {
+  const Eigen::VectorXd s = UniformArcLengths(length, 201);
+  return (SampleCenterline(a.solution.centerline, s).points -
+          SampleCenterline(b.solution.centerline, s).points)
+      .colwise().norm().maxCoeff();
+}
+
+// A pair's start beside a single fit takes the single fit's solve as its own when the other
+// effect is neutral: with every amplitude zero the model must be the spec it changes, whatever
+// its other parameters (up to the discretisation, which a contact's place changes), and a
+// non-zero amplitude must change it.
+TEST(ShapeEffectsTest, NeutralParametersChangeNothing) {
+  const RodSpec nominal = TwoClamps();
+  const std::vector<EffectModel> models = Models(nominal, {0.01, 0.01});
+  RodSimulator sim;
+  const SimulationResult base = sim.Simulate(nominal);
+  ASSERT_TRUE(base.converged);
+  const double accuracy = sim.options().accuracy;
+  int with_amplitudes = 0;
+  for (const EffectModel& m : models) {
+    if (m.amplitudes.empty()) continue;
+    SCOPED_TRACE(ToString(m.effect));
+    ++with_amplitudes;
+    Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(m.scale.size(), 0.3, 0.7);  // somewhere
+    for (int i : m.amplitudes) x[i] = 0.0;
+    ASSERT_TRUE(m.is_neutral(x));
+    RodSimulator neutral = sim;
+    const SimulationResult same = neutral.Resimulate(m.apply(x));
+    ASSERT_TRUE(same.converged);
+    EXPECT_LT(Distance(same, base, nominal.length), accuracy);
+    x[m.amplitudes.front()] = m.scale[m.amplitudes.front()];
+    EXPECT_FALSE(m.is_neutral(x));
+    RodSimulator changed = sim;
+    const SimulationResult other = changed.Resimulate(m.apply(x));
+    ASSERT_TRUE(other.converged);
+    EXPECT_GT(Distance(other, base, nominal.length), 10 * accuracy);
+  }
+  EXPECT_GE(with_amplitudes, 5);  // curvature, both clamp orientations, weight, contact, twists
 }
 
 }  // namespace
