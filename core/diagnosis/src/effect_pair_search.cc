@@ -246,4 +246,47 @@ void DeepenPairSearch(const FitContext& ctx, const std::vector<RodSimulator>& ba
   }
 }
 
+void CheckPartsAlone(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                     const std::vector<EffectModel>& singles, PairSearch* pairs,
+                     std::vector<Fit>* single_fits, const PairSearchOptions& options) {
+  const PairSearch& search = *pairs;
+  std::vector<int> order;
+  for (size_t k = 0; k < search.fits.size(); ++k)
+    if (search.fits[k].ok) order.push_back(static_cast<int>(k));
+  std::stable_sort(order.begin(), order.end(), [&](int p, int q) {
+    return search.fits[static_cast<size_t>(p)].cost < search.fits[static_cast<size_t>(q)].cost;
+  });
+  order.resize(std::min(order.size(), static_cast<size_t>(options.backward_checks)));
+  struct Check {
+    int single = 0;
+    Fit fit;
+  };
+  std::vector<Check> checks;
+  for (int k : order)
+    for (int part = 0; part < 2; ++part) {
+      const EffectModel& pair = search.models[static_cast<size_t>(k)];
+      Check c;
+      c.single = pair.parts[static_cast<size_t>(part)];
+      c.fit.x = PartParameters(pair, singles, part, search.fits[static_cast<size_t>(k)].x);
+      c.fit.branch = search.fits[static_cast<size_t>(k)].branch;
+      checks.push_back(std::move(c));
+    }
+  ParallelFor(static_cast<int>(checks.size()), options.threads, [&](int i) {
+    Check& c = checks[static_cast<size_t>(i)];
+    EffectModel m = singles[static_cast<size_t>(c.single)];
+    m.starts = {c.fit.x};
+    const int branch = c.fit.branch;
+    c.fit = FitEffect(ctx, {bases[static_cast<size_t>(branch)]}, m,
+                      {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
+    c.fit.branch = branch;
+  });
+  // In a fixed order, so that the same single checked from two pairs keeps the same winner.
+  for (Check& c : checks) {
+    pairs->forward_solves += c.fit.forward_solves;
+    pairs->lm_iterations += c.fit.lm_iterations;
+    Fit& old = (*single_fits)[static_cast<size_t>(c.single)];
+    if (c.fit.ok && c.fit.cost < old.cost) old = std::move(c.fit);
+  }
+}
+
 }  // namespace cablefit

@@ -24,6 +24,7 @@ struct PairSearchOptions {
   int start_iterations = 4;   // ... of each start before the screening keeps the best three
   int refits = 8;             // how many of the best screened pairs are carried to the optimum
   int deep_refits = 3;        // how many of the best pairs DeepenPairSearch fits again
+  int backward_checks = 2;    // how many of the best pairs CheckPartsAlone takes apart
   int threads = 1;            // the pairs run in parallel (same result on any count)
 };
 
@@ -49,5 +50,14 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
 void DeepenPairSearch(const FitContext& ctx, const std::vector<RodSimulator>& bases,
                       const std::vector<RodSimulator>& coarse, PairSearch* search,
                       const PairSearchOptions& options);
+
+/// The backward check: each part of the `backward_checks` best pairs of `search` is fitted alone, started
+/// from its parameters in the pair. A pair whose second part does (almost) nothing has found a
+/// better optimum of its first part than that single fit did (the single's starts can all lie
+/// in a wrong basin); the single fit is then replaced, so that the selection weighs the pair
+/// against the single effect at its best, and a second effect must earn its place.
+void CheckPartsAlone(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                     const std::vector<EffectModel>& singles, PairSearch* search,
+                     std::vector<Fit>* single_fits, const PairSearchOptions& options);
 
 }  // namespace cablefit

@@ -281,6 +281,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     double pair_residual = 0.0;
     if (NeedsPairSearch(all, all_fits, n, noise_sigma, options.noise_allowance, &pair_residual))
       DeepenPairSearch(ctx, branches.bases, branches.coarse, &pairs, po);
+    CheckPartsAlone(ctx, branches.bases, models, &pairs, &fits, po);
     out.cost.forward_solves += pairs.forward_solves;
     out.cost.lm_iterations += pairs.lm_iterations;
     for (size_t i = 0; i < pairs.models.size(); ++i) {

@@ -248,12 +248,12 @@ TEST(ConcealedPairsTest, ConfusionMatrix) {
               pair_right, pair_cases, controls_right, controls, not_localised, median, failed,
               seconds.empty() ? 0.0 : seconds[seconds.size() / 2],
               seconds.empty() ? 0.0 : seconds.back(), std::thread::hardware_concurrency());
-  // One cause stays one effect, a clean recording none. Known exception (measured: one of the
-  // eight controls): a single curvature set strong enough to tip the cable into an equilibrium
-  // that the single fit cannot follow from the nominal's comes out as two curvature spans.
-  EXPECT_LE(false_pairs, 1);
+  // One cause stays one effect, a clean recording none (a single fit stuck in a wrong basin is
+  // replaced by its part of the pair that found the better one: the backward check).
+  EXPECT_EQ(false_pairs, 0);
   EXPECT_EQ(none_false_positives, 0);
-  // Measured: one contact of 48 pairs placed more than 5 % of the cable from the true one.
+  // Measured: none or one contact of 48 pairs placed more than 5 % of the cable from the true
+  // one, depending on the basin its search ends in.
   EXPECT_LE(not_localised, 2);
   EXPECT_LE(failed, 2);
   // The identification rate is measured on the whole corpus, not on the sanitizers' sample.
