@@ -181,6 +181,20 @@ std::vector<Vec3> Resample(const std::vector<Vec3>& pts, double step) {
   return out;
 }
 
+// A tube's route never turns back on itself from one station to the next (a cable bends over
+// radii, not about a point). Where a skeleton folds (at a step in the tube's radius, where a
+// core's insulation ends, it can leave an overlapping Z, and the route then doubles back by a
+// few millimetres), the points behind the route's progress are dropped.
+std::vector<Vec3> WithoutFoldBacks(const std::vector<Vec3>& pts) {
+  std::vector<Vec3> out;
+  for (const Vec3& p : pts) {
+    if (!out.empty() && !((p - out.back()).norm() > 0)) continue;
+    if (out.size() >= 2 && !((p - out.back()).dot(out.back() - out[out.size() - 2]) > 0)) continue;
+    out.push_back(p);
+  }
+  return out;
+}
+
 // Unit tangents by chords over about `window` either side (the skeleton zig-zags locally).
 std::vector<Vec3> Tangents(const std::vector<Vec3>& pts, double step, double window) {
   const int n = static_cast<int>(pts.size());
@@ -347,7 +361,7 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
     const bool closed = route.nodes.front() == route.nodes.back();
     const double step = 0.5 * r0;
     for (int pass = 0; pass < 2; ++pass) {  // pass 2 re-cuts normal to the refined route
-      std::vector<Vec3> stations = Resample(pts, step);
+      std::vector<Vec3> stations = Resample(WithoutFoldBacks(pts), step);
       const std::vector<Vec3> tangents = Tangents(stations, step, 2 * r0);
       std::vector<Vec3> refined;
       std::vector<Section> sections;
@@ -386,6 +400,7 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
             if (circular[i]) pts[i] = centres.col(static_cast<Eigen::Index>(i));
           if (slices.radius > 0) radius = slices.radius;
         }
+        pts = WithoutFoldBacks(pts);
         const int n = static_cast<int>(pts.size());
         // Carry free ends out to the caps, where the skeleton stops short.
         if (route.start_is_end) {

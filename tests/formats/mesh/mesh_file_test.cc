@@ -121,6 +121,23 @@ TEST(MeshFile, AFinelyTessellatedLongTubeIsOneCableOnItsRoute) {
   EXPECT_LT(MaxDistanceToPolyline(truth, tubes[0].centreline), 0.01 * diameter);
 }
 
+// A real export (tests/data/mesh/README.md): a straight 20 mm core end whose curve skeleton
+// folds into a Z where the section changes. The route runs straight through, never back.
+TEST(MeshFile, ASkeletonThatFoldsBackGivesARouteThatDoesNot) {
+  const MeshContents contents = ReadMeshContents(
+      (testing::SourceDir() / "tests/data/mesh/freecad_core_end.stl").string(), 0.001, 0.0);
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  const Polyline& route = contents.tubes[0].centreline;
+  const double chord = (route.points.col(route.size() - 1) - route.points.col(0)).norm();
+  EXPECT_NEAR(chord, 0.020, 2e-4);
+  EXPECT_NEAR(route.ChordLength(), chord, 1e-4);  // straight: no Z of 2 x 2.9 mm
+  for (int i = 1; i + 1 < route.size(); ++i) {
+    const Vec3 a = route.points.col(i) - route.points.col(i - 1);
+    const Vec3 b = route.points.col(i + 1) - route.points.col(i);
+    EXPECT_GT(a.dot(b), 0.0) << "turns back at station " << i;
+  }
+}
+
 TEST(MeshFile, SampleStlHasTwoBentTubes) {
   const auto path = (testing::SourceDir() / "samples/harness/bent_tubes.stl").string();
   std::vector<MeshTube> tubes = ReadMeshFile(path, 0.001);
