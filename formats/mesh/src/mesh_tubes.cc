@@ -192,7 +192,7 @@ std::vector<Vec3> WithoutFoldBacks(const std::vector<Vec3>& pts) {
     if (out.size() >= 2 && !((p - out.back()).dot(out.back() - out[out.size() - 2]) > 0)) continue;
     out.push_back(p);
   }
-  return out;
+  return out.size() >= 2 ? out : pts;  // a route of one point stays as it was (no tube)
 }
 
 // Unit tangents by chords over about `window` either side (the skeleton zig-zags locally).
