@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/parallel_for.h"
 #include "effect_combination.h"
 
@@ -35,6 +36,19 @@ Eigen::VectorXd Concat(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   Eigen::VectorXd x(a.size() + b.size());
   x << a, b;
   return x;
+}
+
+// A fine refit this many times worse than its coarse screening left the screening's branch.
+constexpr double kBranchJump = 4.0;
+
+// `sim` solved for `spec` from `shape` (cold, with the solver's whole path when Newton alone
+// does not get there); false when it cannot be.
+bool SolvedFrom(RodSimulator* sim, const RodSpec& spec, const Polyline& shape) {
+  try {
+    return sim->Simulate(spec, &shape).converged;
+  } catch (const InvalidInput&) {
+    return false;
+  }
 }
 
 // A pair's start; `fitted_part` (0 or 1) when that part sits at its single fit and the other
@@ -191,6 +205,25 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     Fit refit = FitEffect(ctx, {bases[static_cast<size_t>(out.fits[k].branch)]}, m,
                           {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
     refit.branch = out.fits[k].branch;
+    // A fine fit far worse than its screening went to another branch on the way (a loop that
+    // flips as a twist comes in): it is fitted again from the screening's own shape.
+    if (!refit.ok || refit.cost > kBranchJump * out.fits[k].cost) {
+      RodSimulator fine(bases[static_cast<size_t>(refit.branch)].options());
+      ++refit.forward_solves;
+      if (SolvedFrom(&fine, m.apply(out.fits[k].x), out.fits[k].solution.centerline)) {
+        Fit again = FitEffect(ctx, {fine}, m,
+                              {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
+        again.branch = refit.branch;
+        again.forward_solves += refit.forward_solves;
+        again.lm_iterations += refit.lm_iterations;
+        if (again.ok && again.cost < refit.cost) {
+          refit = std::move(again);
+        } else {
+          refit.forward_solves = again.forward_solves;
+          refit.lm_iterations = again.lm_iterations;
+        }
+      }
+    }
     refit.forward_solves += out.fits[k].forward_solves;
     refit.lm_iterations += out.fits[k].lm_iterations;
     out.fits[k] = std::move(refit);
