@@ -207,25 +207,22 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     refit.branch = out.fits[k].branch;
     // A fine fit far worse than its screening went to another branch on the way (a loop that
     // flips as a twist comes in): it is fitted again from the screening's own shape.
+    int solves = out.fits[k].forward_solves + refit.forward_solves;
+    int iterations = out.fits[k].lm_iterations + refit.lm_iterations;
     if (!refit.ok || refit.cost > kBranchJump * out.fits[k].cost) {
       RodSimulator fine(bases[static_cast<size_t>(refit.branch)].options());
-      ++refit.forward_solves;
+      ++solves;
       if (SolvedFrom(&fine, m.apply(out.fits[k].x), out.fits[k].solution.centerline)) {
         Fit again = FitEffect(ctx, {fine}, m,
                               {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
+        solves += again.forward_solves;
+        iterations += again.lm_iterations;
         again.branch = refit.branch;
-        again.forward_solves += refit.forward_solves;
-        again.lm_iterations += refit.lm_iterations;
-        if (again.ok && again.cost < refit.cost) {
-          refit = std::move(again);
-        } else {
-          refit.forward_solves = again.forward_solves;
-          refit.lm_iterations = again.lm_iterations;
-        }
+        if (again.ok && again.cost < refit.cost) refit = std::move(again);
       }
     }
-    refit.forward_solves += out.fits[k].forward_solves;
-    refit.lm_iterations += out.fits[k].lm_iterations;
+    refit.forward_solves = solves;
+    refit.lm_iterations = iterations;
     out.fits[k] = std::move(refit);
   });
   for (const Fit& f : out.fits) {

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
 
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
@@ -85,19 +86,32 @@ ShapeAdequacy Assess(const std::vector<EffectModel>& models, const std::vector<F
   return a;
 }
 
+// Whether the best fit of the model lists leaves more than `allowance` times the recording's
+// noise; `residual` receives its rms offset component over the noise.
+bool LeavesMoreThanNoise(
+    std::initializer_list<std::pair<const std::vector<EffectModel>*, const std::vector<Fit>*>> lists,
+    int points, double noise_sigma, double allowance, double* residual) {
+  const EffectModel* model = nullptr;
+  const Fit* best = nullptr;
+  for (const auto& [models, fits] : lists)
+    for (size_t i = 0; i < fits->size(); ++i)
+      if ((*fits)[i].ok && (!best || (*fits)[i].cost < best->cost)) {
+        best = &(*fits)[i];
+        model = &(*models)[i];
+      }
+  if (!best) return false;
+  const int dof = 2 * points - model->physical_parameters;
+  *residual = std::sqrt(2.0 * best->cost / std::max(1, dof)) / noise_sigma;
+  if (!(allowance > 0)) return false;
+  return !internal::TestAdequacy(best->cost, dof, noise_sigma, allowance).passed;
+}
+
 // Whether the best single model leaves more than `allowance` times the recording's noise, so
 // that a second effect could have something to explain; `residual` receives its rms offset
 // component over the noise.
 bool NeedsPairSearch(const std::vector<EffectModel>& models, const std::vector<Fit>& fits,
                      int points, double noise_sigma, double allowance, double* residual) {
-  size_t best = fits.size();
-  for (size_t i = 0; i < fits.size(); ++i)
-    if (fits[i].ok && (best == fits.size() || fits[i].cost < fits[best].cost)) best = i;
-  if (best == fits.size()) return false;
-  const int dof = 2 * points - models[best].physical_parameters;
-  *residual = std::sqrt(2.0 * fits[best].cost / std::max(1, dof)) / noise_sigma;
-  if (!(allowance > 0)) return false;
-  return !internal::TestAdequacy(fits[best].cost, dof, noise_sigma, allowance).passed;
+  return LeavesMoreThanNoise({{&models, &fits}}, points, noise_sigma, allowance, residual);
 }
 
 EffectCandidate Candidate(const EffectModel& model, const Fit& fit,
@@ -274,12 +288,9 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     po.threads = options.threads;
     PairSearch pairs = SearchEffectPairs(ctx, branches.bases, branches.coarse, nominal, models,
                                          fits, po);
-    std::vector<EffectModel> all = models;
-    std::vector<Fit> all_fits = fits;
-    all.insert(all.end(), pairs.models.begin(), pairs.models.end());
-    all_fits.insert(all_fits.end(), pairs.fits.begin(), pairs.fits.end());
     double pair_residual = 0.0;
-    if (NeedsPairSearch(all, all_fits, n, noise_sigma, options.noise_allowance, &pair_residual))
+    if (LeavesMoreThanNoise({{&models, &fits}, {&pairs.models, &pairs.fits}}, n, noise_sigma,
+                            options.noise_allowance, &pair_residual))
       DeepenPairSearch(ctx, branches.bases, branches.coarse, &pairs, po);
     CheckPartsAlone(ctx, branches.bases, models, &pairs, &fits, po);
     out.cost.forward_solves += pairs.forward_solves;
