@@ -80,6 +80,25 @@ constexpr int kSnapIterationFactor = 8;
 constexpr double kEscapeKicks[] = {0.01, 0.03, 0.1};
 constexpr unsigned kEscapeSeed = 12345;
 
+// Pseudo-transient continuation (Kelley & Keyes, SIAM J. Numer. Anal. 35 (1998); Coffey, Kelley &
+// Keyes, SIAM J. Sci. Comput. 25 (2003) for the constrained case): implicit Euler steps of the
+// gradient flow, (H + shift I) dx = -g with the constraints kept, shift = 1 / pseudo-time step.
+// The flow only goes downhill, so it passes folds a continuation in the load parameter stalls at;
+// it is the globaliser when that stalls. The first shift is a thousandth of the Hessian scale (a
+// step of a few degrees per frame on the stiffest frame). A full step taken lets the pseudo-time
+// step grow tenfold, a step the line search had to cut shrinks it fourfold: switched evolution
+// relaxation by the residual alone turned the flow into Newton's method 25 steps into a 30-turn
+// coil, which then crawled at cut steps for thousands of iterations. Below the floor the steps
+// are Newton's. A line search that fails raises the shift tenfold instead of ending the solve
+// (a shorter pseudo-time step is closer to the flow). The flow needs far more steps than Newton:
+// the 30-turn coil took 1340, hence kPseudoTransientIterationFactor x the Newton budget.
+constexpr double kPseudoTransientFirstShift = 1e-3;
+constexpr double kPseudoTransientShiftCut = 0.1;
+constexpr double kPseudoTransientShiftGrowth = 4.0;
+constexpr double kPseudoTransientRaise = 10.0;
+constexpr double kPseudoTransientFloor = 1e-8;
+constexpr int kPseudoTransientIterationFactor = 60;
+
 struct Evaluation {
   double energy = 0.0;
   Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
@@ -397,8 +416,12 @@ void StabilityAt(const RodModel& model, const std::vector<char>& free, Evaluatio
 
 }  // namespace
 
-StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
-                                  const StaticsOptions& options) {
+namespace {
+
+// Newton's method on the KKT system; with `pseudo_time_shift` > 0 (relative to the Hessian
+// scale) pseudo-transient continuation that turns into Newton's method as it converges.
+StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
+                                  const StaticsOptions& options, double pseudo_time_shift) {
   const auto t0 = Clock::now();
   StaticsSummary sum;
   if (RejectInvalidOptions(options, &sum)) return sum;
@@ -415,6 +438,7 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   bool first = true;
   double best_constraint = std::numeric_limits<double>::infinity();
   int best_constraint_iter = 0;
+  const bool pseudo_transient = pseudo_time_shift > 0;
   for (int iter = 0;; ++iter) {
     CheckCancelled();  // a batch item's --timeout
     Evaluate(model, *state, true, &state->lambda, free, &ev);
@@ -457,10 +481,11 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     }
     MaskHessian(free, &ev.hessian);
     const double scale = HessianScale(ev.hessian);
+    const double kkt0 = std::max(sum.gradient_norm / gtol, sum.constraint_norm / ctol);
     KktSolve kkt;
     // Inertia correction. A Hessian that is not finite (loads beyond any physical size) has no
     // shift that helps: the loop would never reach its bound, so it fails at once.
-    for (double mu = 0.0; std::isfinite(scale);) {
+    for (double mu = pseudo_time_shift * scale; std::isfinite(scale);) {
       CheckCancelled();
       kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
       if (kkt.ok && kkt.negative_directions == 0) break;
@@ -504,7 +529,6 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
     const double phi0 = ev.energy + PenaltyTerms(ev.c, compliance, nu);
     const double slope = ev.gradient.dot(step) + compliant_slope - nu * rigid_c1;
     const RodState start = *state;
-    const double kkt0 = std::max(sum.gradient_norm / gtol, sum.constraint_norm / ctol);
     double alpha = 1.0;
     bool accepted = false;
     for (int ls = 0; ls < kMaxBacktracks; ++ls, alpha *= 0.5) {
@@ -545,6 +569,22 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
         *state = start;
       }
     }
+    if (!accepted && pseudo_transient &&
+        pseudo_time_shift * kPseudoTransientRaise <= kMaxHessianShift) {
+      *state = start;
+      pseudo_time_shift =
+          std::max(kPseudoTransientRaise * pseudo_time_shift, kPseudoTransientFirstShift);
+      continue;
+    }
+    if (pseudo_transient) {
+      // The pseudo-time step grows while the flow's full steps are taken and shrinks when the
+      // line search had to cut one: far from equilibrium the flow stays a flow instead of
+      // turning into a Newton iteration that crawls at cut steps.
+      pseudo_time_shift = alpha == 1.0 ? pseudo_time_shift * kPseudoTransientShiftCut
+                                       : std::max(pseudo_time_shift * kPseudoTransientShiftGrowth,
+                                                  kPseudoTransientFloor);
+      if (pseudo_time_shift < kPseudoTransientFloor) pseudo_time_shift = 0.0;
+    }
     if (!accepted) {
       *state = start;
       sum.termination = TerminationType::kLineSearchFailure;
@@ -559,6 +599,21 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
   if (sum.converged()) StabilityAt(model, free, &ev, &kkt_ldlt, &sum);
   sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
+}
+
+// The pseudo-transient solve at the state's targets and factors, with its larger budget.
+StaticsSummary SolvePseudoTransient(const RodModel& model, RodState* state,
+                                    const StaticsOptions& options) {
+  StaticsOptions flow = options;
+  flow.max_iterations = kPseudoTransientIterationFactor * options.max_iterations;
+  return SolveStaticsNewton(model, state, flow, kPseudoTransientFirstShift);
+}
+
+}  // namespace
+
+StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
+                                  const StaticsOptions& options) {
+  return SolveStaticsNewton(model, state, options, 0.0);
 }
 
 void EvaluateStability(const RodModel& model, const RodState& state, StaticsSummary* summary) {
@@ -723,13 +778,37 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
   // Continuation from the start state's own poses (and, if asked, from zero load).
   RodState cur = start;
   std::vector<double> fold_at;
+  double pseudo_transient_from = -1.0;  // t where the gradient flow took over, if it did
   double t = 0.0, dt = kFirstContinuationStep;
   int steps = 0;
   bool at_start = true;
   while (true) {
     if (steps >= options.max_continuation_steps || dt < kMinContinuationStep) {
+      // The path folds back here (or winds on): from the last state on it, the gradient flow of
+      // the full problem goes downhill to an equilibrium past the fold. A caller that allows no
+      // continuation (a warm re-solve on a budget) gets none of this either.
+      if (options.max_continuation_steps == 0) {
+        sum.termination = TerminationType::kNoConvergence;
+        sum.message = "continuation stalled at t=" + std::to_string(t);
+        break;
+      }
+      RodState flow = cur;
+      internal::SetSupportTargets(model, 1.0, start, &flow);
+      flow.load_factor = 1.0;
+      flow.natural_factor = 1.0;
+      flow.drawn_factor = 0.0;
+      StaticsSummary step = SolvePseudoTransient(model, &flow, options);
+      total_iterations += step.iterations;
+      if (step.converged()) {
+        sum = step;
+        flow.drawn_curvature.clear();
+        *state = flow;
+        pseudo_transient_from = t;
+        break;
+      }
       sum.termination = TerminationType::kNoConvergence;
-      sum.message = "continuation stalled at t=" + std::to_string(t);
+      sum.message = "continuation stalled at t=" + std::to_string(t) +
+                    " (and pseudo-transient continuation from there: " + step.message + ")";
       break;
     }
     const double t_next = at_start ? 0.0 : std::min(1.0, t + dt);
@@ -774,12 +853,15 @@ StaticsSummary SolveStaticsFrom(const RodModel& model, RodState* state,
   }
   sum.continuation_steps = steps;
   sum.iterations = total_iterations;
-  sum.folds_passed = static_cast<int>(fold_at.size());
-  if (sum.converged() && (drawn_rest || !fold_at.empty())) {
+  sum.folds_passed = static_cast<int>(fold_at.size()) + (pseudo_transient_from >= 0 ? 1 : 0);
+  if (sum.converged() && (drawn_rest || !fold_at.empty() || pseudo_transient_from >= 0)) {
     std::ostringstream os;
     os.precision(3);
     if (drawn_rest) os << "relaxed from the drawn shape as rest shape";
     for (double f : fold_at) os << (os.tellp() > 0 ? "; " : "") << "passed a fold at t=" << f;
+    if (pseudo_transient_from >= 0)
+      os << (os.tellp() > 0 ? "; " : "") << "continuation stalled at t=" << pseudo_transient_from
+         << ", pseudo-transient continuation reached the equilibrium";
     sum.message = os.str();
   }
   sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -149,5 +149,24 @@ TEST(DrawnRest, AStretchDrawnNearlyTautHangs) {
   EXPECT_LT(sol.branches[0].points.row(2).minCoeff(), -1e-3);  // it hangs under gravity
 }
 
+
+TEST(DrawnRest, ALongSpringPastTheFoldsOfItsPathRelaxes) {
+  // 30 turns (3.8 m of cable) between clamps 0.6 m apart: the homotopy from the drawn rest shape
+  // folds back at t ~ 0.3 where the coil collapses into loops; no smaller continuation step
+  // passes that, and before pseudo-transient continuation took over there it ended with
+  // "continuation stalled" and "could not relax the initial shape: iteration limit".
+  const NetworkSpec spec =
+      ClampedDrawing(Helix(0.02, 0.02, 30), TestMaterial(0.02, 0.05, 0.004));
+  NetworkOptions opt;
+  opt.element_length = 0.02;
+  const NetworkSolution sol = SolveNetwork(spec, opt);
+  ASSERT_TRUE(sol.converged()) << sol.summary.BriefReport();
+  EXPECT_TRUE(sol.summary.stable) << sol.summary.BriefReport();
+  EXPECT_GT(sol.summary.folds_passed, 0) << sol.summary.BriefReport();
+  ExpectEndsHeld(spec, sol);
+  const double coil_energy = 0.5 * 0.02 * spec.branches[0].length / (0.02 * 0.02);
+  EXPECT_LT(sol.summary.final_energy, 0.5 * coil_energy) << sol.summary.BriefReport();
+}
+
 }  // namespace
 }  // namespace cablefit
