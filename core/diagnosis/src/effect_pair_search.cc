@@ -38,6 +38,10 @@ Eigen::VectorXd Concat(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return x;
 }
 
+// SharePartsOfTheBest: a rival that overtakes the best shares its part back, at most this many
+// times (each pair is started from each best once).
+constexpr int kSharedPartRounds = 3;
+
 // A fine refit this many times worse than its coarse screening left the screening's branch.
 constexpr double kBranchJump = 4.0;
 
@@ -273,6 +277,87 @@ void DeepenPairSearch(const FitContext& ctx, const std::vector<RodSimulator>& ba
       deep[r].lm_iterations += old.lm_iterations;
       old = std::move(deep[r]);
     }
+  }
+}
+
+namespace {
+
+size_t BestFit(const std::vector<Fit>& fits) {
+  size_t best = fits.size();
+  for (size_t k = 0; k < fits.size(); ++k)
+    if (fits[k].ok && (best == fits.size() || fits[k].cost < fits[best].cost)) best = k;
+  return best;
+}
+
+// `m`'s parameters `x` with the part it shares with `bm` set to where `bx` has it; nullopt when
+// they share none (the same effect twice is not a part to share: its copies are not
+// interchangeable).
+std::optional<Eigen::VectorXd> WithSharedPart(const EffectModel& m, const Eigen::VectorXd& x,
+                                              const EffectModel& bm, const Eigen::VectorXd& bx,
+                                              const std::vector<EffectModel>& singles) {
+  if (bm.parts[0] == bm.parts[1] || m.parts[0] == m.parts[1]) return std::nullopt;
+  for (int part = 0; part < 2; ++part)
+    for (int bpart = 0; bpart < 2; ++bpart)
+      if (m.parts[static_cast<size_t>(part)] == bm.parts[static_cast<size_t>(bpart)]) {
+        Eigen::VectorXd y = x;
+        const Eigen::VectorXd from = PartParameters(bm, singles, bpart, bx);
+        y.segment(m.part_offsets[static_cast<size_t>(part)], from.size()) = from;
+        return y;
+      }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void SharePartsOfTheBest(const FitContext& ctx, const std::vector<RodSimulator>& bases,
+                         const std::vector<EffectModel>& singles, PairSearch* search,
+                         const PairSearchOptions& options) {
+  // A rival that overtakes the best shares its part back: rounds until the best stays.
+  std::vector<std::pair<size_t, size_t>> tried;  // (pair, the best it was started from)
+  for (int round = 0; round < kSharedPartRounds; ++round) {
+    const size_t best = BestFit(search->fits);
+    if (best == search->fits.size()) return;
+    const EffectModel& bm = search->models[best];
+    const Fit& bf = search->fits[best];
+    struct Reseed {
+      size_t pair = 0;
+      Fit fit;
+    };
+    std::vector<Reseed> reseeds;
+    for (size_t k = 0; k < search->fits.size(); ++k) {
+      const Fit& f = search->fits[k];
+      if (k == best || !f.ok || f.cost > options.shared_part_range * bf.cost) continue;
+      if (std::find(tried.begin(), tried.end(), std::make_pair(k, best)) != tried.end()) continue;
+      const std::optional<Eigen::VectorXd> x =
+          WithSharedPart(search->models[k], f.x, bm, bf.x, singles);
+      if (!x) continue;
+      tried.emplace_back(k, best);
+      Reseed r;
+      r.pair = k;
+      r.fit.x = *x;
+      reseeds.push_back(std::move(r));
+    }
+    if (reseeds.empty()) return;
+    ParallelFor(static_cast<int>(reseeds.size()), options.threads, [&](int i) {
+      Reseed& r = reseeds[static_cast<size_t>(i)];
+      EffectModel m = search->models[r.pair];
+      m.starts = {r.fit.x};
+      const int branch = search->fits[r.pair].branch;
+      r.fit = FitEffect(ctx, {bases[static_cast<size_t>(branch)]}, m,
+                        {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
+      r.fit.branch = branch;
+    });
+    for (Reseed& r : reseeds) {
+      Fit& old = search->fits[r.pair];
+      search->forward_solves += r.fit.forward_solves;
+      search->lm_iterations += r.fit.lm_iterations;
+      if (r.fit.ok && r.fit.cost < old.cost) {
+        r.fit.forward_solves += old.forward_solves;
+        r.fit.lm_iterations += old.lm_iterations;
+        old = std::move(r.fit);
+      }
+    }
+    if (BestFit(search->fits) == best) return;
   }
 }
 

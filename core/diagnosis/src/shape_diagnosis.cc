@@ -292,6 +292,7 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     if (LeavesMoreThanNoise({{&models, &fits}, {&pairs.models, &pairs.fits}}, n, noise_sigma,
                             options.noise_allowance, &pair_residual))
       DeepenPairSearch(ctx, branches.bases, branches.coarse, &pairs, po);
+    SharePartsOfTheBest(ctx, branches.bases, models, &pairs, po);
     CheckPartsAlone(ctx, branches.bases, models, &pairs, &fits, po);
     out.cost.forward_solves += pairs.forward_solves;
     out.cost.lm_iterations += pairs.lm_iterations;
