@@ -58,7 +58,8 @@ struct ScannedTruth {
   double extraction_seconds = 0.0;
 };
 
-/// Solves `truth`, takes a synthetic hand-held scan of it (its parameters drawn from `rng`
+/// Solves `truth` (its point loads, the hidden contacts, turned normal to the cable as it finally
+/// hangs, as a frictionless support pushes), takes a synthetic hand-held scan of it (its parameters drawn from `rng`
 /// whether or not `run`) and extracts the centre line guided by `told` (by `truth` when `told`
 /// lists fewer than two supports). Nothing but the draws happens unless `run`.
 ScannedTruth ScanTruth(const RodSpec& truth, const RodSpec& told, std::mt19937& rng, bool run);
