@@ -199,3 +199,26 @@ void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
 }
 
 }  // namespace cablefit::internal
+
+namespace cablefit {
+
+void AbsorbCoreTails(const std::vector<TubeSolid>& tube_solids, double min_aspect,
+                     double junction_tolerance, HarnessDrawing* drawing) {
+  // The cables themselves are candidates already (they have no CAD shape); the parts that are
+  // short tubes join them.
+  std::vector<internal::DrawnTube> tubes;
+  for (const TubeSolid& solid : tube_solids) {
+    internal::DrawnTube tube;
+    tube.is_cable = false;
+    tube.index = solid.solid;
+    tube.skipped_note = solid.skipped_note;
+    tube.centres = solid.centres;
+    tube.radius = solid.radius;
+    tubes.push_back(std::move(tube));
+  }
+  internal::AbsorbedTubes absorbed(*drawing);
+  internal::MergeCoreTails(tubes, min_aspect, junction_tolerance, drawing, &absorbed);
+  absorbed.RemoveFrom(drawing);
+}
+
+}  // namespace cablefit

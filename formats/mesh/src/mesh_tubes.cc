@@ -578,7 +578,10 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
                         " is a short stout solid (%.3g mm long, %.3g mm across, under %g "
                         "diameters): a part, not a cable",
                         1e3 * length, 1e3 * diameter, min_aspect);
-          throw InvalidInput("component " + std::to_string(component) + why);
+          out.parts.push_back({component, components[c],
+                               "component " + std::to_string(component) + why,
+                               more.front().centreline, diameter});
+          continue;
         }
       }
       for (auto& t : more) out.tubes.push_back(std::move(t));
@@ -587,7 +590,7 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
           hollow && hollow->centreline.ChordLength() >= min_aspect * hollow->diameter) {
         out.tubes.push_back(std::move(*hollow));
       } else {
-        out.parts.push_back({component, components[c], e.what()});
+        out.parts.push_back({component, components[c], e.what(), {}, 0.0});
       }
     }
   }

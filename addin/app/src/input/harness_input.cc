@@ -109,7 +109,12 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   }
   // Components that are no tube stay in the harness as parts: drawn, and clips and obstacles
   // for the cables, as a STEP file's other solids are.
+  std::vector<TubeSolid> tube_solids;
   for (MeshPart& part : contents.parts) {
+    if (part.centreline.size() >= 2) {
+      tube_solids.push_back({static_cast<int>(d.solids.size()), part.centreline.points,
+                             0.5 * part.diameter, static_cast<int>(d.skipped.size())});
+    }
     DrawnSolid solid;
     solid.name = stem + "-part" + std::to_string(part.component + 1);
     solid.mesh = std::move(part.mesh);
@@ -118,7 +123,10 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
   }
   if (std::string why = ImplausibleMeshUnit(d, mesh_unit); !why.empty()) d.warnings.push_back(why);
   // Branch ends recovered from a skeleton sit within a fraction of the tube radius of each other.
-  FindJunctions(&d, 0.25 * min_diameter);
+  const double junction_tolerance = 0.25 * min_diameter;
+  // A multi-core cable's stripped core ends, meshed as tubes of their own, belong to it.
+  AbsorbCoreTails(tube_solids, kMinMeshTubeAspect, junction_tolerance, &d);
+  FindJunctions(&d, junction_tolerance);
   return d;
 }
 

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/mesh_file.h"
@@ -26,6 +28,32 @@ DrawnCable Cable(double length, double diameter) {
   c.centreline = Straight(length);
   c.diameter = diameter;
   return c;
+}
+
+// The meshes side by side in one mesh (no shared vertices: one component each).
+TriangleMesh Joined(const std::vector<TriangleMesh>& meshes) {
+  TriangleMesh all;
+  Eigen::Index nv = 0, nf = 0;
+  for (const TriangleMesh& m : meshes) nv += m.vertices.cols(), nf += m.faces.cols();
+  all.vertices.resize(3, nv);
+  all.faces.resize(3, nf);
+  nv = nf = 0;
+  for (const TriangleMesh& m : meshes) {
+    all.vertices.middleCols(nv, m.vertices.cols()) = m.vertices;
+    all.faces.middleCols(nf, m.faces.cols()) = m.faces.array() + static_cast<int>(nv);
+    nv += m.vertices.cols();
+    nf += m.faces.cols();
+  }
+  return all;
+}
+
+// A straight piece from `a` to `b` [m].
+Polyline Segment(const Vec3& a, const Vec3& b, int n = 8) {
+  Polyline p;
+  p.points.resize(3, n);
+  for (int i = 0; i < n; ++i) p.points.col(i) = a + (b - a) * i / (n - 1.0);
+  p.ParameteriseByChords(0.0);
+  return p;
 }
 
 TEST(RelaxInput, MetreSizesReadAsMillimetresAreNamedWithTheUnitThatFits) {
@@ -100,6 +128,34 @@ TEST(RelaxInput, AShortStoutCylinderIsAPartNotACable) {
   ASSERT_EQ(contents.parts.size(), 1u);
   EXPECT_NE(contents.parts[0].reason.find("short stout solid"), std::string::npos)
       << contents.parts[0].reason;
+}
+
+TEST(RelaxInput, StrippedCoreEndsOfAMeshedCableArePartOfIt) {
+  const auto dir = testing::FreshTempDir("relax_input_core_tails");
+  // An 8 mm jacket 200 mm long; out of its end face come two 2.5 mm cores (8 of their own
+  // diameters: parts by length) and a 1 mm conductor (20 diameters: a tube by length), each
+  // 20 mm long, starting 5 mm inside the jacket. A 1 mm wire 40 mm away is a cable of its own.
+  std::vector<TriangleMesh> meshes = {SweepTubeMesh(Straight(0.2), 0.008, 24)};
+  for (int k = 0; k < 3; ++k) {
+    const double angle = 2.0 * M_PI * k / 3.0;
+    const Vec3 offset(0.0, 0.0016 * std::cos(angle), 0.0016 * std::sin(angle));
+    meshes.push_back(SweepTubeMesh(Segment(Vec3(0.195, 0, 0) + offset, Vec3(0.215, 0, 0) + offset),
+                                   k == 2 ? 0.001 : 0.0025, 12));
+  }
+  meshes.push_back(SweepTubeMesh(Segment(Vec3(0.1, 0.04, 0), Vec3(0.13, 0.04, 0)), 0.001, 12));
+  const std::string path = (dir / "jacket_with_cores.stl").string();
+  WriteMeshFile(path, Joined(meshes), 0.001);
+
+  const HarnessDrawing d = ReadHarnessInput(path, 0.001);
+  ASSERT_EQ(d.cables.size(), 2u);
+  int jackets = 0;
+  for (const DrawnCable& c : d.cables) jackets += c.diameter > 0.006;
+  EXPECT_EQ(jackets, 1);
+  EXPECT_TRUE(d.solids.empty());
+  int tails = 0;
+  for (const std::string& line : d.skipped) tails += line.find("stripped core end") != std::string::npos;
+  EXPECT_EQ(tails, 3);
+  EXPECT_TRUE(d.junctions.empty());
 }
 
 }  // namespace

@@ -102,6 +102,22 @@ void NameCablesUniquely(HarnessDrawing* drawing);
 /// (only groups of two or more ends). Replaces `drawing->junctions`.
 void FindJunctions(HarnessDrawing* drawing, double tolerance);
 
+/// A solid part that is a short tube (a mesh component too short to be a cable of its own).
+struct TubeSolid {
+  int solid = 0;              ///< index into HarnessDrawing::solids
+  Eigen::Matrix3Xd centres;   ///< 3 x n [m], its route
+  double radius = 0.0;        ///< [m]
+  int skipped_note = -1;      ///< the HarnessDrawing::skipped line that says why it is a part
+};
+
+/// Stripped core ends of multi-core cables in a drawing that did not come from ReadCadFile (a
+/// mesh): a cable or tube part thinner than a cable's cores can be, rooted in that cable's end
+/// section and running out of it, shorter than `min_aspect` of its diameters, is part of that
+/// cable. It leaves the drawing with one `skipped` line naming the cable. A tube whose root meets
+/// the ends of two other cables (within `junction_tolerance` [m]) is a breakout branch and stays.
+void AbsorbCoreTails(const std::vector<TubeSolid>& tube_solids, double min_aspect,
+                     double junction_tolerance, HarnessDrawing* drawing);
+
 /// A relaxed cable to be written: a new centreline for input cable `source_cable`.
 struct RelaxedCable {
   int source_cable = 0;  ///< index into the input HarnessDrawing::cables (name, colour, diameter)

@@ -28,6 +28,10 @@ struct MeshPart {
   int component = 0;
   TriangleMesh mesh;   ///< [m]
   std::string reason;  ///< why it is no tube ("component 2 is not a tube (cross-sections ...)")
+  /// When it is a tube too short to be a cable (a bush, a stripped core end): its route (empty
+  /// otherwise) and diameter [m].
+  Polyline centreline;
+  double diameter = 0.0;
 };
 
 /// Everything a mesh holds: its tubes, and the other components, kept as parts (drawn, and
