@@ -10,6 +10,7 @@
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/app/bench/bench_harness.h"
+#include "cablefit/app/bench/drawn_shapes.h"
 #include "cablefit/app/relax/relax_network.h"
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/network/network_simulation.h"
@@ -134,6 +135,26 @@ void BenchKblSizedLengths() {
   }
 }
 
+// Single cables drawn in shapes a straight-rest cable is hard to relax from (coils, a long
+// spring, kinks, a nearly taut stretch), relaxed from their drawing as `relax` does.
+void BenchDrawnShapes() {
+  for (const DrawnShapeCase& c : DrawnShapeCases()) {
+    NetworkOptions opt;
+    opt.element_length = c.element_length;
+    const auto t0 = Clock::now();
+    const NetworkSolution sol = SolveNetwork(c.spec, opt);
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    const char* row = c.name.c_str();
+    std::printf("%s_length: %.3f m\n", row, c.spec.branches[0].length);
+    std::printf("%s_elements: %d elements\n", row, sol.num_elements);
+    std::printf("%s_converged: %d bool\n", row, sol.converged() ? 1 : 0);
+    std::printf("%s_stable: %d bool\n", row, sol.summary.stable ? 1 : 0);
+    std::printf("%s_folds_passed: %d folds\n", row, sol.summary.folds_passed);
+    std::printf("%s_iterations: %d iterations\n", row, sol.summary.iterations);
+    std::printf("%s: %.3f s\n", row, seconds);
+  }
+}
+
 // The harness with clips twice as sparse, so its spans sag, over a body panel tessellated as
 // finely as CAD exports panels: what the contact search and the active set cost.
 void BenchContact(int reps) {
@@ -224,6 +245,7 @@ int RunBench(const std::string& case_path, int reps) {
   BenchNetwork(reps);
   BenchKblSizedNetwork();
   BenchKblSizedLengths();
+  BenchDrawnShapes();
   BenchContact(reps);
   BenchMotionSweep(spec, reps);
   BenchNetworkMotionSweep();
@@ -237,6 +259,7 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
   auto diagnose_dir = std::make_shared<std::string>();
   auto reps = std::make_shared<int>(21);
   auto kbl_only = std::make_shared<bool>(false);
+  auto drawn_only = std::make_shared<bool>(false);
   auto* cmd = app.add_subcommand("bench", "Print performance figures (name: value unit)");
   cmd->add_option("--case", *case_path, "case.json to time instead of the built-in sagging cable");
   cmd->add_option("--repeat", *reps, "repetitions per figure (the median is printed)")
@@ -247,10 +270,15 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
                   "its fits on every core, as `diagnose --jobs 1` (per case, median and worst)");
   cmd->add_flag("--kbl-network", *kbl_only,
                "instead: only the KBL-sized network figures (kbl_network*)");
+  cmd->add_flag("--drawn-shapes", *drawn_only,
+               "instead: only the cables drawn as coils, springs, kinks and taut (drawn_*)");
   cmd->callback([=] {
-    if (*kbl_only) {
-      BenchKblSizedNetwork();
-      BenchKblSizedLengths();
+    if (*kbl_only || *drawn_only) {
+      if (*kbl_only) {
+        BenchKblSizedNetwork();
+        BenchKblSizedLengths();
+      }
+      if (*drawn_only) BenchDrawnShapes();
       *exit_code = kExitOk;
       return;
     }

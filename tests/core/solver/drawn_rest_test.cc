@@ -100,7 +100,7 @@ TEST(DrawnRest, AHelicalSpringDrawnAsACurveRelaxesBetweenItsClamps) {
     ASSERT_TRUE(sol.converged()) << turns << " turns: " << sol.summary.BriefReport();
     EXPECT_TRUE(sol.summary.stable) << sol.summary.BriefReport();
     ExpectEndsHeld(spec, sol);
-      // The straight-rest cable does not stay coiled: its bending energy is that of the real
+    // The straight-rest cable does not stay coiled: its bending energy is that of the real
     // rest shape, well below the drawn coil's (curvature 1/r all along).
     const double coil_energy = 0.5 * 0.02 * spec.branches[0].length / (0.02 * 0.02);
     EXPECT_LT(sol.summary.final_energy, 0.5 * coil_energy) << sol.summary.BriefReport();
