@@ -172,6 +172,7 @@ Fit FitEffect(const FitContext& ctx, const std::vector<RodSimulator>& bases, con
     best.cost = runs.front().lm.cost;
     best.branch = runs.front().branch;
     best.converged = runs.front().lm.converged;
+    for (size_t k = 1; k < runs.size(); ++k) best.other_basins.push_back(runs[k].lm.x);
     best.ok = Residual(ctx, &runs.front().sim, m.apply(best.x), &best.offsets, &best.solution,
                        /*patient=*/true);
     if (!best.ok) best.cost = INFINITY;

@@ -38,6 +38,9 @@ struct Fit {
   bool ok = false;          // false: no start could be solved
   int forward_solves = 0;   // over every start and run of the fit
   int lm_iterations = 0;
+  /// Where the other distinct basins a screened fit kept ended, best first: a screening ranks
+  /// basins only roughly, and a later fit may carry one of them on too.
+  std::vector<Eigen::VectorXd> other_basins;
 };
 
 /// The fits' cost (1/2 |offsets|^2 [m^2]) of `spec` solved warm from `sim` (patiently);

@@ -55,6 +55,12 @@ bool SolvedFrom(RodSimulator* sim, const RodSpec& spec, const Polyline& shape) {
   }
 }
 
+bool HasResidualStarts(const EffectModel& pair, const std::vector<EffectModel>& singles) {
+  for (int part : pair.parts)
+    if (!singles[static_cast<size_t>(part)].residual_starts.empty()) return true;
+  return false;
+}
+
 // A pair's start; `fitted_part` (0 or 1) when that part sits at its single fit and the other
 // one is neutral: the start's solve, offsets and most of its Jacobian are the single fit's.
 struct PairStart {
@@ -82,6 +88,7 @@ std::vector<PairStart> PairStarts(const EffectModel& ma, const Fit& fa, const Ef
   }
   starts.push_back({Concat(fa.x, fb.x), -1});
   for (const Eigen::VectorXd& s : mb.starts) with_a_fitted(s);
+  for (const Eigen::VectorXd& s : mb.residual_starts) with_a_fitted(s);
   for (const Eigen::VectorXd& s : ma.starts)
     starts.push_back({Concat(s, fb.x), ma.is_neutral(s) ? 1 : -1});
   return starts;
@@ -224,6 +231,17 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
         again.branch = refit.branch;
         if (again.ok && again.cost < refit.cost) refit = std::move(again);
       }
+    }
+    // A placed effect added to another one's fit (a contact) has local optima the coarse
+    // screening ranks in the wrong order: its second basin is carried on too.
+    if (HasResidualStarts(m, singles) && !out.fits[k].other_basins.empty()) {
+      m.starts = {out.fits[k].other_basins.front()};
+      Fit second = FitEffect(ctx, {bases[static_cast<size_t>(out.fits[k].branch)]}, m,
+                             {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
+      solves += second.forward_solves;
+      iterations += second.lm_iterations;
+      second.branch = out.fits[k].branch;
+      if (second.ok && (!refit.ok || second.cost < refit.cost)) refit = std::move(second);
     }
     refit.forward_solves = solves;
     refit.lm_iterations = iterations;

@@ -206,6 +206,9 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
       Eigen::VectorXd x = Eigen::VectorXd::Zero(3);
       x[0] = L * (i + 0.5) / 8;
       m.starts.push_back(x);
+      if (i == 0) continue;
+      x[0] = L * i / 8.0;
+      m.residual_starts.push_back(x);
     }
     const Vec3 gravity = nominal.gravity;
     auto force = [=](const Eigen::VectorXd& x) {

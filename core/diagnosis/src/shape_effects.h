@@ -44,6 +44,9 @@ struct EffectModel {
   std::optional<int> clamp;             // clamp (support) index for clamp effects
   Eigen::VectorXd scale;                // typical size of every parameter
   std::vector<Eigen::VectorXd> starts;  // starting physical parameters
+  /// More starts when the effect is added to another one's fit: what that fit leaves is
+  /// smaller and more local than the whole mismatch, so a placed effect needs a finer grid.
+  std::vector<Eigen::VectorXd> residual_starts;
   /// The parameters that set the effect's strength: where all of them are zero the model is
   /// the spec it changes, and the other parameters (where, how wide) do nothing. Empty when no
   /// parameter value is neutral.
