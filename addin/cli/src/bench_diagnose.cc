@@ -8,9 +8,9 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 #include <vector>
 
+#include "cablefit/app/base/batch_pool.h"
 #include "cablefit/app/diagnose/diagnose_case.h"
 #include "cablefit/app/diagnose/diagnose_output.h"
 #include "cablefit/app/report/report_case.h"
@@ -55,8 +55,10 @@ int BenchDiagnose(const std::string& dir) {
   const std::filesystem::path scratch = ScratchFolder();
   std::vector<double> shape, force;
   int index = 0;
-  // As `cablefit diagnose --jobs 1`: one case at a time, its fits on every core.
-  const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  // As `cablefit diagnose --jobs 1`: one case at a time, its fits on every core the
+  // process may run on (its affinity: `taskset -c 0` times one core without two threads taking
+  // turns on it).
+  const int threads = UsableCores();
   std::printf("diagnose_fit_threads: %d\n", threads);
   for (const std::string& file : list.files) {
     const std::string name = std::filesystem::path(file).parent_path().filename().string();

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <thread>
 
 #include "cablefit/app/base/batch_pool.h"
 #include "cablefit/app/diagnose/diagnose_output.h"
@@ -189,7 +188,7 @@ DiagnoseSummary DiagnosePipeline::Run(const std::vector<std::string>& paths) {
   const int jobs = ResolveJobs(options_.jobs, n);
   // The cores the cases leave idle run the starts of a case's fits (results do not depend on it).
   const int fit_threads =
-      std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / std::max(jobs, 1));
+      std::max(1, UsableCores() / std::max(jobs, 1));
   // Nothing is written over an input, checked before any case runs.
   OutputFolder output(options_.out_dir, paths);
   output.AddInputs(files_);

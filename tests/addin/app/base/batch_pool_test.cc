@@ -6,6 +6,10 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/solver_failure.h"
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 #include <atomic>
 #include <new>
 #include <stdexcept>
@@ -21,6 +25,27 @@ TEST(ResolveJobs, ClampsToItemsAndAtLeastOne) {
   EXPECT_EQ(ResolveJobs(3, 0), 1);
   EXPECT_GE(ResolveJobs(0, 100), 1);  // hardware concurrency
 }
+
+#ifdef __linux__
+// `taskset -c 0 cablefit ...` (or a container's cpuset) leaves one core whatever the machine
+// has: more threads than that would only take turns.
+TEST(UsableCores, FollowsTheCpuAffinity) {
+  cpu_set_t before;
+  ASSERT_EQ(sched_getaffinity(0, sizeof(before), &before), 0);
+  EXPECT_EQ(UsableCores(), CPU_COUNT(&before));
+  int first = 0;
+  while (!CPU_ISSET(first, &before)) ++first;
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(first, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof(one), &one), 0);
+  const int cores = UsableCores();
+  const int jobs = ResolveJobs(0, 100);
+  ASSERT_EQ(sched_setaffinity(0, sizeof(before), &before), 0);
+  EXPECT_EQ(cores, 1);
+  EXPECT_EQ(jobs, 1);
+}
+#endif
 
 TEST(RunBatch, RunsEveryItemOnceAndKeepsFailuresPerItem) {
   for (int jobs : {1, 3}) {

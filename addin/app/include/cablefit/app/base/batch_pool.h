@@ -10,8 +10,13 @@
 
 namespace cablefit::addin {
 
-/// The worker count for a `--jobs` value: `requested` if > 0, else the hardware concurrency
-/// (at least 1); never more than `items` (and at least 1).
+/// The cores this process may run on: its CPU affinity (`taskset`, a container's cpuset) where
+/// the system says, else the hardware concurrency; at least 1. More threads than that only take
+/// turns on the same cores.
+int UsableCores();
+
+/// The worker count for a `--jobs` value: `requested` if > 0, else UsableCores(); never more
+/// than `items` (and at least 1).
 int ResolveJobs(int requested, int items);
 
 /// Calls `work(i)` for every i in [0, items) on `jobs` threads, the calling one included
