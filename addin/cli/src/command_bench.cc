@@ -267,7 +267,8 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
       ->capture_default_str();
   cmd->add_option("--diagnose", *diagnose_dir,
                   "instead: time the diagnosis of every case under DIR, one case at a time with "
-                  "its fits on every usable core (taskset -c 0: one), as `diagnose --jobs 1` (per case, median and worst)");
+                  "its fits on every usable core (taskset -c 0: one), as `diagnose --jobs 1` "
+                  "(per case, median and worst)");
   cmd->add_flag("--kbl-network", *kbl_only,
                "instead: only the KBL-sized network figures (kbl_network*)");
   cmd->add_flag("--drawn-shapes", *drawn_only,
