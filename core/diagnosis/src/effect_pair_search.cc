@@ -45,15 +45,36 @@ constexpr int kSharedPartRounds = 3;
 // A fine refit this many times worse than its coarse screening left the screening's branch.
 constexpr double kBranchJump = 4.0;
 
-// `sim` solved for `spec` from `shape` (cold, with the solver's whole path when Newton alone
-// does not get there); false when it cannot be.
-bool SolvedFrom(RodSimulator* sim, const RodSpec& spec, const Polyline& shape) {
+// `sim` solved for `spec` from `shape`, a solution of the same spec on another level or of a
+// nearby spec, by Newton alone: a path from there could only end on another equilibrium. False
+// when it cannot be.
+bool SolvedNear(RodSimulator* sim, const RodSpec& spec, const Polyline& shape) {
   try {
-    return sim->Simulate(spec, &shape).converged;
+    return sim->SimulateNear(spec, shape).converged;
   } catch (const InvalidInput&) {
     return false;
   }
 }
+
+// `m` fitted from `x` on `base`'s fine model, its first solve started from `shape` (a fit's own
+// equilibrium) instead of continued from the nominal's: a start far from the nominal (a strong
+// anisotropy on a hanging drop) may otherwise come to rest on another equilibrium. Not ok when
+// `shape` cannot be brought to `x`'s equilibrium; `solves` counts every forward solve.
+Fit FitFromShape(const FitContext& ctx, const RodSimulator& base, EffectModel m,
+                 const Eigen::VectorXd& x, const Polyline& shape, int max_iterations,
+                 int* solves, int* iterations) {
+  RodSimulator fine(base.options());
+  ++*solves;
+  if (!SolvedNear(&fine, m.apply(x), shape)) return {};
+  m.starts = {x};
+  Fit fit = FitEffect(ctx, {fine}, m, {max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
+  *solves += fit.forward_solves;
+  *iterations += fit.lm_iterations;
+  return fit;
+}
+
+// A fit point's cost (1/2 |offsets|^2 [m^2]), as a Fit's.
+double PointCost(const FitPoint& p) { return 0.5 * p.offsets.squaredNorm(); }
 
 bool HasResidualStarts(const EffectModel& pair, const std::vector<EffectModel>& singles) {
   for (int part : pair.parts)
@@ -172,10 +193,27 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
   for (auto& entry : points) todo.push_back(&entry);
   ParallelFor(static_cast<int>(todo.size()), options.threads, [&](int t) {
     const PointKey& key = todo[static_cast<size_t>(t)]->first;
-    todo[static_cast<size_t>(t)]->second =
-        EvaluateFitPoint(ctx, coarse[static_cast<size_t>(key.branch)],
-                         singles[static_cast<size_t>(key.single)],
-                         single_fits[static_cast<size_t>(key.single)].x);
+    const EffectModel& model = singles[static_cast<size_t>(key.single)];
+    const Fit& single = single_fits[static_cast<size_t>(key.single)];
+    const RodSimulator& base = coarse[static_cast<size_t>(key.branch)];
+    FitPoint& point = todo[static_cast<size_t>(t)]->second;
+    point = EvaluateFitPoint(ctx, base, model, single.x);
+    // Continued from the nominal's equilibrium, the coarse model may come to rest on another one
+    // at a strong single fit (an anisotropic drop that turns over): every pair started beside
+    // that fit would start from the wrong shape. Started from the fine fit's own shape, it is
+    // evaluated where the fit is. (A point that could not be solved at all is left out as
+    // before: its pairs start from their other starts.)
+    if (!point.ok || PointCost(point) <= kBranchJump * single.cost) return;
+    RodSimulator from_shape(base.options());
+    int solves = point.forward_solves + 1;
+    if (!SolvedNear(&from_shape, model.apply(single.x), single.solution.centerline)) {
+      point.forward_solves = solves;
+      return;
+    }
+    FitPoint again = EvaluateFitPoint(ctx, std::move(from_shape), model, single.x);
+    solves += again.forward_solves;
+    if (again.ok && (!point.ok || PointCost(again) < PointCost(point))) point = std::move(again);
+    point.forward_solves = solves;
   });
   for (const auto& [key, point] : points) out.forward_solves += point.forward_solves;
   // 2. Every pair screened on the coarse level: a few iterations from its starts, the pairs in
@@ -221,16 +259,11 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     int solves = out.fits[k].forward_solves + refit.forward_solves;
     int iterations = out.fits[k].lm_iterations + refit.lm_iterations;
     if (!refit.ok || refit.cost > kBranchJump * out.fits[k].cost) {
-      RodSimulator fine(bases[static_cast<size_t>(refit.branch)].options());
-      ++solves;
-      if (SolvedFrom(&fine, m.apply(out.fits[k].x), out.fits[k].solution.centerline)) {
-        Fit again = FitEffect(ctx, {fine}, m,
-                              {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
-        solves += again.forward_solves;
-        iterations += again.lm_iterations;
-        again.branch = refit.branch;
-        if (again.ok && again.cost < refit.cost) refit = std::move(again);
-      }
+      Fit again = FitFromShape(ctx, bases[static_cast<size_t>(refit.branch)], m, out.fits[k].x,
+                               out.fits[k].solution.centerline, options.max_iterations, &solves,
+                               &iterations);
+      again.branch = refit.branch;
+      if (again.ok && again.cost < refit.cost) refit = std::move(again);
     }
     // A placed effect added to another one's fit (a contact) has local optima the coarse
     // screening ranks in the wrong order: its second basin is carried on too.
@@ -342,6 +375,7 @@ void SharePartsOfTheBest(const FitContext& ctx, const std::vector<RodSimulator>&
       Fit fit;
     };
     std::vector<Reseed> reseeds;
+    const Polyline best_shape = bf.solution.centerline;
     for (size_t k = 0; k < search->fits.size(); ++k) {
       const Fit& f = search->fits[k];
       if (k == best || !f.ok || f.cost > options.shared_part_range * bf.cost) continue;
@@ -359,11 +393,24 @@ void SharePartsOfTheBest(const FitContext& ctx, const std::vector<RodSimulator>&
     ParallelFor(static_cast<int>(reseeds.size()), options.threads, [&](int i) {
       Reseed& r = reseeds[static_cast<size_t>(i)];
       EffectModel m = search->models[r.pair];
-      m.starts = {r.fit.x};
-      const int branch = search->fits[r.pair].branch;
-      r.fit = FitEffect(ctx, {bases[static_cast<size_t>(branch)]}, m,
+      const Eigen::VectorXd x = r.fit.x;
+      m.starts = {x};
+      const Fit& old = search->fits[r.pair];
+      const size_t base = static_cast<size_t>(old.branch);
+      r.fit = FitEffect(ctx, {bases[base]}, m,
                         {options.max_iterations, 1, /*polish=*/true, /*patient_start=*/true});
-      r.fit.branch = branch;
+      // A reseed far worse than the pair was, from a start that shares the best pair's part, came
+      // to rest on another equilibrium on its way from the nominal: it starts again from the
+      // best pair's shape, the one it was meant to reach.
+      if (!r.fit.ok || r.fit.cost > kBranchJump * old.cost) {
+        int solves = r.fit.forward_solves, iterations = r.fit.lm_iterations;
+        Fit again = FitFromShape(ctx, bases[base], m, x, best_shape, options.max_iterations,
+                                 &solves, &iterations);
+        if (again.ok && (!r.fit.ok || again.cost < r.fit.cost)) r.fit = std::move(again);
+        r.fit.forward_solves = solves;
+        r.fit.lm_iterations = iterations;
+      }
+      r.fit.branch = old.branch;
     });
     for (Reseed& r : reseeds) {
       Fit& old = search->fits[r.pair];

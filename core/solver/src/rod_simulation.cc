@@ -64,6 +64,17 @@ bool RodSimulator::RejectInvalidOptions(SimulationResult* result) const {
 }
 
 SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* initial) {
+  return SimulateWith(spec, initial, options_.statics);
+}
+
+SimulationResult RodSimulator::SimulateNear(const RodSpec& spec, const Polyline& initial) {
+  StaticsOptions direct = options_.statics;
+  direct.max_continuation_steps = 0;
+  return SimulateWith(spec, &initial, direct);
+}
+
+SimulationResult RodSimulator::SimulateWith(const RodSpec& spec, const Polyline* initial,
+                                            const StaticsOptions& statics) {
   const auto t0 = Clock::now();
   SimulationResult rejected;
   if (RejectInvalidOptions(&rejected)) return rejected;
@@ -89,7 +100,7 @@ SimulationResult RodSimulator::Simulate(const RodSpec& spec, const Polyline* ini
     RodState state = level == 0 ? MakeInitialState(model, curve)
                                 : TransferState(models_[level - 1], states_[level - 1], model);
     LevelSolution solved;
-    solved.summary = SolveStatics(model, &state, options_.statics);
+    solved.summary = SolveStatics(model, &state, statics);
     solved.branches = {NodeCenterline(model, state)};
     states_.push_back(std::move(state));
     return solved;

@@ -67,5 +67,39 @@ TEST(WarmResimulate, AnInvalidWarmBudgetIsReportedLikeAnyInvalidOption) {
   EXPECT_FALSE(why.empty());
 }
 
+// A solution of another discretisation is solved again by Newton alone, to the same shape.
+TEST(SimulateNear, AnotherLevelsSolutionIsSolvedWithoutContinuation) {
+  SimulationOptions coarse;
+  coarse.min_levels = coarse.max_levels = 1;
+  RodSimulator c(coarse);
+  const SimulationResult from = c.Simulate(SaggingRod(1.0));
+  ASSERT_TRUE(from.converged);
+  RodSimulator near(TwoLevelsWithWarmBudget(8));
+  const SimulationResult r = near.SimulateNear(SaggingRod(1.0), from.solution.centerline);
+  ASSERT_TRUE(r.converged) << r.solution.summary.message;
+  EXPECT_EQ(r.solution.summary.continuation_steps, 0);
+  RodSimulator cold(TwoLevelsWithWarmBudget(8));
+  const SimulationResult reference = cold.Simulate(SaggingRod(1.0));
+  ASSERT_TRUE(reference.converged);
+  EXPECT_LT(LargestGap(r.solution.centerline, reference.solution.centerline), 1e-9);
+}
+
+// Far from an equilibrium, with a Newton budget too small to get there directly, it fails
+// without a path; Simulate from the same shape with the same budget gets there by one.
+TEST(SimulateNear, FailsWhereOnlyAPathWouldGetThere) {
+  SimulationOptions few = TwoLevelsWithWarmBudget(8);
+  few.statics.max_iterations = 4;
+  RodSimulator light(TwoLevelsWithWarmBudget(8));
+  const SimulationResult shape = light.Simulate(SaggingRod(0.1));
+  ASSERT_TRUE(shape.converged);
+  RodSimulator near(few);
+  const SimulationResult direct = near.SimulateNear(SaggingRod(4.0), shape.solution.centerline);
+  EXPECT_FALSE(direct.converged);
+  EXPECT_EQ(direct.solution.summary.continuation_steps, 0);
+  RodSimulator path(few);
+  const SimulationResult continued = path.Simulate(SaggingRod(4.0), &shape.solution.centerline);
+  EXPECT_TRUE(continued.converged) << continued.solution.summary.message;
+}
+
 }  // namespace
 }  // namespace cablefit

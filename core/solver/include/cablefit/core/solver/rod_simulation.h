@@ -59,6 +59,11 @@ class RodSimulator {
   /// curve through the supports is used. Throws InvalidInput for an invalid spec.
   SimulationResult Simulate(const RodSpec& spec, const Polyline* initial = nullptr);
 
+  /// Cold solve from `initial` by Newton alone, without continuation: for a shape already near
+  /// an equilibrium of `spec` (a solution of another discretisation), where a failure should
+  /// come fast instead of after a path that may end on another equilibrium.
+  SimulationResult SimulateNear(const RodSpec& spec, const Polyline& initial);
+
   /// Warm re-solve of a changed spec (same supports in number and order) at the levels of the
   /// last Simulate, each starting from its last solution.
   SimulationResult Resimulate(const RodSpec& spec);
@@ -70,6 +75,8 @@ class RodSimulator {
   const SimulationOptions& options() const { return options_; }
 
  private:
+  SimulationResult SimulateWith(const RodSpec& spec, const Polyline* initial,
+                                const StaticsOptions& statics);
   SimulationResult ResimulateWith(const RodSpec& spec, const StaticsOptions& statics);
   SimulationResult Finish(std::vector<StaticsSummary> summaries, double seconds);
   bool RejectInvalidOptions(SimulationResult* result) const;
