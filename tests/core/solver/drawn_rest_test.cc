@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "cablefit/core/base/helix.h"
 #include "cablefit/core/network/network_simulation.h"
 #include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
@@ -18,19 +19,6 @@ namespace {
 
 using testing::Clamp;
 using testing::TestMaterial;
-
-// A helix of `turns` turns about z, radius r and pitch p per turn, sampled finely.
-Polyline Helix(double r, double p, double turns) {
-  const int n = static_cast<int>(96 * turns) + 1;
-  Polyline h;
-  h.points.resize(3, n);
-  for (int k = 0; k < n; ++k) {
-    const double a = 2 * M_PI * turns * k / (n - 1);
-    h.points.col(k) = Vec3(r * std::cos(a), r * std::sin(a), p * a / (2 * M_PI));
-  }
-  h.ParameteriseByChords();
-  return h;
-}
 
 Vec3 EndTangent(const Polyline& c, bool at_end) {
   const int n = c.size();
@@ -68,7 +56,7 @@ void ExpectEndsHeld(const NetworkSpec& spec, const NetworkSolution& sol) {
 TEST(DrawnRest, TheDrawingIsAnEquilibriumOfItsOwnRestShapeAtZeroLoad) {
   RodSpec spec;
   spec.name = "spring";
-  const Polyline helix = Helix(0.02, 0.015, 3);
+  const Polyline helix = SampleHelix(0.02, 0.015, 3);
   spec.length = helix.s[helix.size() - 1];
   spec.material = TestMaterial();
   spec.supports = {Clamp(0.0, helix.points.col(0), EndTangent(helix, false)),
@@ -93,7 +81,7 @@ TEST(DrawnRest, TheDrawingIsAnEquilibriumOfItsOwnRestShapeAtZeroLoad) {
 
 TEST(DrawnRest, AHelicalSpringDrawnAsACurveRelaxesBetweenItsClamps) {
   for (const double turns : {2.0, 5.0}) {
-    const NetworkSpec spec = ClampedDrawing(Helix(0.02, 0.012, turns), TestMaterial(0.02, 0.05, 0.004));
+    const NetworkSpec spec = ClampedDrawing(SampleHelix(0.02, 0.012, turns), TestMaterial(0.02, 0.05, 0.004));
     NetworkOptions opt;
     opt.element_length = 0.01;
     const NetworkSolution sol = SolveNetwork(spec, opt);
@@ -156,7 +144,7 @@ TEST(DrawnRest, ALongSpringPastTheFoldsOfItsPathRelaxes) {
   // passes that, and before pseudo-transient continuation took over there it ended with
   // "continuation stalled" and "could not relax the initial shape: iteration limit".
   const NetworkSpec spec =
-      ClampedDrawing(Helix(0.02, 0.02, 30), TestMaterial(0.02, 0.05, 0.004));
+      ClampedDrawing(SampleHelix(0.02, 0.02, 30), TestMaterial(0.02, 0.05, 0.004));
   NetworkOptions opt;
   opt.element_length = 0.02;
   const NetworkSolution sol = SolveNetwork(spec, opt);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "cablefit/core/base/helix.h"
+
 namespace cablefit::addin {
 namespace {
 
@@ -12,19 +14,6 @@ MaterialSpec Material(double ei, double density, double diameter) {
   m.linear_density = density;       // [kg/m]
   m.diameter = diameter;            // [m]
   return m;
-}
-
-// A helix about z: radius r, pitch p per turn [m], sampled finely enough to keep its curvature.
-Polyline Helix(double r, double p, double turns) {
-  const int n = static_cast<int>(96 * turns) + 1;
-  Polyline h;
-  h.points.resize(3, n);
-  for (int k = 0; k < n; ++k) {
-    const double a = 2 * M_PI * turns * k / (n - 1);
-    h.points.col(k) = Vec3(r * std::cos(a), r * std::sin(a), p * a / (2 * M_PI));
-  }
-  h.ParameteriseByChords();
-  return h;
 }
 
 Polyline Corners(const std::vector<Vec3>& corners) {
@@ -83,8 +72,8 @@ DrawnShapeCase Clamped(const std::string& name, const Polyline& route, const Mat
 std::vector<DrawnShapeCase> DrawnShapeCases() {
   const MaterialSpec spring_wire = Material(0.02, 0.05, 0.004);
   std::vector<DrawnShapeCase> cases;
-  cases.push_back(Clamped("drawn_coil_5_turns", Helix(0.02, 0.012, 5), spring_wire, 0.01));
-  cases.push_back(Clamped("drawn_spring_30_turns", Helix(0.02, 0.02, 30), spring_wire, 0.02));
+  cases.push_back(Clamped("drawn_coil_5_turns", SampleHelix(0.02, 0.012, 5), spring_wire, 0.01));
+  cases.push_back(Clamped("drawn_spring_30_turns", SampleHelix(0.02, 0.02, 30), spring_wire, 0.02));
   cases.push_back(Clamped("drawn_kinks",
                           Corners({Vec3(0, 0, 0), Vec3(0.15, 0, 0), Vec3(0.15, 0, -0.15),
                                    Vec3(0.3, 0, -0.15), Vec3(0.3, 0, 0), Vec3(0.45, 0, 0)}),
