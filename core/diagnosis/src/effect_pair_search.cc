@@ -212,7 +212,7 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     }
     FitPoint again = EvaluateFitPoint(ctx, std::move(from_shape), model, single.x);
     solves += again.forward_solves;
-    if (again.ok && (!point.ok || PointCost(again) < PointCost(point))) point = std::move(again);
+    if (again.ok && PointCost(again) < PointCost(point)) point = std::move(again);
     point.forward_solves = solves;
   });
   for (const auto& [key, point] : points) out.forward_solves += point.forward_solves;
@@ -375,7 +375,7 @@ void SharePartsOfTheBest(const FitContext& ctx, const std::vector<RodSimulator>&
       Fit fit;
     };
     std::vector<Reseed> reseeds;
-    const Polyline best_shape = bf.solution.centerline;
+    const Polyline& best_shape = bf.solution.centerline;  // the best is not refitted below
     for (size_t k = 0; k < search->fits.size(); ++k) {
       const Fit& f = search->fits[k];
       if (k == best || !f.ok || f.cost > options.shared_part_range * bf.cost) continue;

@@ -187,8 +187,7 @@ DiagnoseSummary DiagnosePipeline::Run(const std::vector<std::string>& paths) {
   }
   const int jobs = ResolveJobs(options_.jobs, n);
   // The cores the cases leave idle run the starts of a case's fits (results do not depend on it).
-  const int fit_threads =
-      std::max(1, UsableCores() / std::max(jobs, 1));
+  const int fit_threads = std::max(1, UsableCores() / std::max(jobs, 1));
   // Nothing is written over an input, checked before any case runs.
   OutputFolder output(options_.out_dir, paths);
   output.AddInputs(files_);
