@@ -467,6 +467,8 @@ std::vector<bool> PlaceNodes(NodeMap* node_map, const KblReadOptions& options, K
     }
     CableJunction j;
     j.position = ref;
+    j.joined = true;
+    j.name = node_id;
     for (const CableJunction::End& e : info.ends) {
       KblSegment& seg = h.segments[static_cast<size_t>(e.cable)];
       (e.at_start ? seg.start : seg.end).segments_at_node = static_cast<int>(info.ends.size());

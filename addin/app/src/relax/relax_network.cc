@@ -128,9 +128,13 @@ std::vector<RelaxGroup> GroupCables(const HarnessDrawing& drawing,
   }
   int found = 0;
   for (const CableJunction& cj : drawing.junctions) {
-    if (cj.ends.size() < 3) continue;  // two touching ends: separate cables unless declared
-    RelaxGroup::Junction j{"breakout " + std::to_string(++found), {}, config.junction_compliance,
-                           config.junction_mass, false};
+    // Two ends that only touch are separate cables unless declared; a file's node joins them.
+    if (cj.ends.size() < 3 && !cj.joined) continue;
+    ++found;
+    const std::string name = !cj.name.empty()      ? cj.name
+                             : cj.ends.size() >= 3 ? "breakout " + std::to_string(found)
+                                                   : "splice " + std::to_string(found);
+    RelaxGroup::Junction j{name, {}, config.junction_compliance, config.junction_mass, false};
     for (const CableJunction::End& e : cj.ends)
       if (!used[e.cable][e.at_start ? 0 : 1]) j.ends.push_back(e);
     if (j.ends.size() >= 2) junctions.push_back(j);

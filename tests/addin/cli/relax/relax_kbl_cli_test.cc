@@ -4,9 +4,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "cablefit/formats/json_util.h"
+#include "cablefit/formats/kbl_file.h"
 #include "cli_runner.h"
 #include "relax_test_util.h"
 #include "test_support.h"
@@ -122,6 +124,56 @@ TEST(RelaxKblCli, A183SegmentHarnessRelaxesEverySegmentToItsVirtualLength) {
   EXPECT_EQ(stiffened, 79);  // every tape and corrugated tube
   ASSERT_EQ(j.at("networks").size(), 1u);
   EXPECT_EQ(j.at("networks").at(0).at("cables").size(), 183u);
+}
+
+// A KBL node where only two segments meet is where a protection or fixing starts, not where the
+// bundle is held: the two segments are one bundle through it (a splice of the network), not two
+// cables clamped at the node. tools/make_vehicle_kbl.py --segments 24 (README in tests/data/kbl).
+TEST(RelaxKblCli, ANodeOfTwoSegmentsIsASpliceOfOneBundleNotAClamp) {
+  const fs::path out = testing::FreshTempDir("relax_kbl_splice");
+  const auto run = RunCablefit("relax " + Q(Kbl("vehicle_harness_24.kbl")) + " --out " + Q(out) +
+                               " --no-pictures --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const Json j = json::ReadJsonFile((out / "vehicle_harness_24.json").string());
+  ASSERT_EQ(j.at("cables").size(), 24u);
+  ASSERT_EQ(j.at("networks").size(), 1u);  // one tree: one network
+  std::map<std::string, int> junction_ends;
+  for (const Json& jn : j.at("networks").at(0).at("junctions"))
+    junction_ends[jn.at("name").get<std::string>()] = static_cast<int>(jn.at("branch_loads").size());
+  auto end_point = [](const Json& c, bool at_start) {
+    const Json& rows = c.at("relaxed_centreline").at("rows");
+    const Json& row = at_start ? rows.front() : rows.back();
+    return Vec3(row.at(1).get<double>(), row.at(2).get<double>(), row.at(3).get<double>());
+  };
+  std::map<std::string, std::vector<Vec3>> node_ends;  // relaxed end points at each node
+  int splices = 0;
+  for (const Json& c : j.at("cables")) {
+    ASSERT_FALSE(c.contains("error")) << c.at("name");
+    for (const char* side : {"start", "end"}) {
+      const Json& end = c.at("kbl").at(side);
+      const std::string node = end.at("node").get<std::string>();
+      const int at_node = end.at("segments_at_node").get<int>();
+      if (at_node < 2) continue;
+      EXPECT_EQ(junction_ends[node], at_node) << node;
+      splices += at_node == 2;
+      node_ends[node].push_back(end_point(c, std::string(side) == "start"));
+      // Nothing holds the bundle at a node it runs through: no support at that end.
+      const double s_end = std::string(side) == "start" ? 0.0 : c.at("length").get<double>();
+      for (const Json& sp : c.at("supports"))
+        EXPECT_GT(std::abs(sp.at("s").get<double>() - s_end), 1e-6) << c.at("name") << " " << side;
+    }
+  }
+  EXPECT_GE(splices, 10);  // both ends of each of the file's splice nodes
+  // The bundle sags through its splices: relaxed nodes are not where the file draws them.
+  const KblHarness drawn = ReadKblFile(Kbl("vehicle_harness_24.kbl").string());
+  double largest_move = 0.0;
+  for (const CableJunction& jn : drawn.drawing.junctions) {
+    const auto it = node_ends.find(jn.name);
+    ASSERT_NE(it, node_ends.end()) << jn.name;
+    for (const Vec3& p : it->second) EXPECT_LT((p - it->second.front()).norm(), 1e-6) << jn.name;
+    if (jn.ends.size() == 2) largest_move = std::max(largest_move, (it->second.front() - jn.position).norm());
+  }
+  EXPECT_GT(largest_move, 0.005);
 }
 
 // Every segment 3 % longer than drawn (tools/make_kbl_harness.py, 20 segments): each stretch

@@ -76,6 +76,10 @@ struct CableJunction {
     bool at_start = true; ///< the end at s = 0 (else at s = length)
   };
   std::vector<End> ends;
+  /// The file joins these ends (a KBL node: the bundle runs on through it), so two ends are a
+  /// splice too; ends found only because they touch need three to be a breakout.
+  bool joined = false;
+  std::string name;  ///< what the file calls the place ("Node_7"); empty when found by touch
 };
 
 struct HarnessDrawing {
