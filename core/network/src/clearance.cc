@@ -142,4 +142,93 @@ ClearanceHit TubeToTubeClearance(const Polyline& a, double ra, const TubeSkip& s
   return best;
 }
 
+TubeClearanceIndex::TubeClearanceIndex(std::vector<Tube> tubes) : tubes_(std::move(tubes)) {
+  for (const Tube& t : tubes_) widest_ = std::max(widest_, t.radius);
+  for (size_t t = 0; t < tubes_.size(); ++t) {
+    const Polyline* c = tubes_[t].centreline;
+    if (c == nullptr) continue;
+    for (int i = 0; i + 1 < c->size(); ++i) {
+      Eigen::AlignedBox3d b(Vec3(c->points.col(i)));
+      b.extend(Vec3(c->points.col(i + 1)));
+      segments_.emplace_back(static_cast<int>(t), i);
+      boxes_.push_back(b);
+    }
+  }
+  tree_ = BoxTree(boxes_, 8);
+}
+
+int TubeClearanceIndex::Nearest(int i, const PairSkip& skip, double* clearance) const {
+  const Polyline& a = *tubes_[static_cast<size_t>(i)].centreline;
+  const double ra = tubes_[static_cast<size_t>(i)].radius;
+  int best_tube = -1;
+  double best = std::numeric_limits<double>::infinity();
+  if (a.size() >= 2) {
+    // Tube i in runs of segments, each searched with the best of all runs so far.
+    for (const Run& run : Runs(a, a.s[0], a.s[a.size() - 1])) {
+      best = tree_.Nearest(
+          // The centrelines' gap less both radii (the widest tube's for the other) bounds the
+          // surfaces' clearance from below, overlaps (negative clearances) included.
+          [&](const Eigen::AlignedBox3d& box) {
+            return box.exteriorDistance(run.box) - ra - widest_;
+          },
+          [&](int k, double best_so_far) {
+            const auto [j, seg] = segments_[static_cast<size_t>(k)];
+            if (j == i) return best_so_far;
+            const Polyline& b = *tubes_[static_cast<size_t>(j)].centreline;
+            const TubeSkip sa = skip(i, j), sb = skip(j, i);
+            const double a_from = a.s[0] + sa.start, a_to = a.s[a.size() - 1] - sa.end;
+            const double b_from = b.s[0] + sb.start, b_to = b.s[b.size() - 1] - sb.end;
+            const double sb0 = b.s[seg], sb1 = b.s[seg + 1];
+            const double rb = tubes_[static_cast<size_t>(j)].radius;
+            for (int s = run.begin; s < run.end; ++s) {
+              double u = 0, v = 0;
+              ClosestSegmentParameters(a.points.col(s), a.points.col(s + 1), b.points.col(seg),
+                                       b.points.col(seg + 1), &u, &v);
+              const double s_a = a.s[s] + u * (a.s[s + 1] - a.s[s]);
+              const double s_b = sb0 + v * (sb1 - sb0);
+              if (s_a < a_from || s_a > a_to || s_b < b_from || s_b > b_to) continue;
+              const Vec3 pa = a.points.col(s) + u * (a.points.col(s + 1) - a.points.col(s));
+              const Vec3 pb = b.points.col(seg) + v * (b.points.col(seg + 1) - b.points.col(seg));
+              const double c = (pa - pb).norm() - ra - rb;
+              if (c < best_so_far || (c == best_so_far && j < best_tube)) {
+                best_so_far = c;
+                best_tube = j;
+              }
+            }
+            return best_so_far;
+          },
+          best);
+    }
+  }
+  if (clearance) *clearance = best;
+  return best_tube;
+}
+
+std::vector<int> TubeClearanceIndex::Within(int i, double reach) const {
+  const Polyline& a = *tubes_[static_cast<size_t>(i)].centreline;
+  std::vector<int> out;
+  if (a.size() < 2) return out;
+  Eigen::AlignedBox3d whole;
+  for (int k = 0; k < a.size(); ++k) whole.extend(Vec3(a.points.col(k)));
+  const std::vector<Run> runs = Runs(a, a.s[0], a.s[a.size() - 1]);
+  const double grow = tubes_[static_cast<size_t>(i)].radius + widest_ + reach;
+  auto near = [&](const Eigen::AlignedBox3d& box, const Eigen::AlignedBox3d& around) {
+    return box.exteriorDistance(around) <= grow;
+  };
+  std::vector<char> seen(tubes_.size(), 0);
+  tree_.ForEach([&](const Eigen::AlignedBox3d& box) { return near(box, whole); },
+                [&](int k) {
+                  const int j = segments_[static_cast<size_t>(k)].first;
+                  if (j == i || seen[static_cast<size_t>(j)]) return;
+                  for (const Run& run : runs)
+                    if (near(boxes_[static_cast<size_t>(k)], run.box)) {
+                      seen[static_cast<size_t>(j)] = 1;
+                      return;
+                    }
+                });
+  for (size_t j = 0; j < seen.size(); ++j)
+    if (seen[j]) out.push_back(static_cast<int>(j));
+  return out;
+}
+
 }  // namespace cablefit

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace cablefit {
 namespace {
@@ -110,6 +112,60 @@ TEST(ClearanceTest, SkewCablesAreLineDistanceMinusRadii) {
   const ClearanceHit skipped = TubeToTubeClearance(a, ra, {0.0, 0.25}, b, rb, {});
   EXPECT_GT(skipped.clearance, hit.clearance + 1e-3);
   EXPECT_LE(skipped.s, 0.6 - 0.25 + 1e-12);
+}
+
+// Many random wavy tubes: each tube's nearest other tube and that clearance are what measuring
+// every pair gives, with and without the ends left out at shared ends; the tubes within reach
+// include every pair closer than the reach.
+TEST(ClearanceTest, TubeIndexFindsWhatEveryPairGives) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Polyline> lines;
+  std::vector<TubeClearanceIndex::Tube> tubes;
+  for (int t = 0; t < 40; ++t) {
+    const Vec3 start(u(rng), u(rng), 0.3 * u(rng));
+    const Vec3 dir = Vec3(u(rng) - 0.5, u(rng) - 0.5, 0.2 * (u(rng) - 0.5)).normalized();
+    Eigen::Matrix3Xd p(3, 60);
+    for (int i = 0; i < 60; ++i)
+      p.col(i) = start + 0.005 * i * dir + Vec3(0, 0, 0.01 * std::sin(0.3 * i + t));
+    lines.push_back(FromPoints(p));
+  }
+  // Tube 1 starts where tube 0 ends: a junction whose ends are left out.
+  lines[1].points.colwise() += Vec3(lines[0].points.rightCols<1>() - lines[1].points.col(0));
+  for (size_t t = 0; t < lines.size(); ++t) tubes.push_back({&lines[t], 0.002 + 0.0001 * t});
+  const TubeClearanceIndex index(tubes);
+  auto skip = [&](int a, int b) {
+    TubeSkip s;
+    if (a + b == 1) (a == 0 ? s.end : s.start) = 0.02;
+    return s;
+  };
+  for (int i = 0; i < static_cast<int>(tubes.size()); ++i) {
+    int best_j = -1;
+    double best = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < static_cast<int>(tubes.size()); ++j) {
+      if (j == i) continue;
+      const ClearanceHit h = TubeToTubeClearance(lines[i], tubes[i].radius, skip(i, j), lines[j],
+                                                 tubes[j].radius, skip(j, i));
+      if (h.clearance < best) {
+        best = h.clearance;
+        best_j = j;
+      }
+    }
+    double found = 0.0;
+    EXPECT_EQ(index.Nearest(i, skip, &found), best_j) << i;
+    EXPECT_NEAR(found, best, 1e-12) << i;
+    const double reach = 0.05;
+    const std::vector<int> near = index.Within(i, reach);
+    for (int j = 0; j < static_cast<int>(tubes.size()); ++j) {
+      if (j == i) continue;
+      const ClearanceHit h = TubeToTubeClearance(lines[i], tubes[i].radius, {}, lines[j],
+                                                 tubes[j].radius, {});
+      if (h.clearance <= reach) {
+        EXPECT_TRUE(std::count(near.begin(), near.end(), j)) << i << " " << j;
+      }
+    }
+    EXPECT_LT(near.size(), tubes.size() - 1) << "far tubes are not within reach";
+  }
 }
 
 }  // namespace

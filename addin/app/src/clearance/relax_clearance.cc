@@ -26,10 +26,44 @@ TubeSkip JunctionSkip(const ClearanceCable& a, const ClearanceCable& b) {
 
 std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& cables,
                                              const std::vector<ClearanceSolid>& solids) {
+  // Cable pairs: each cable's nearest other cable, and every pair close enough to break the
+  // min_clearance asked of it; pairs far apart are never measured (TubeClearanceIndex).
+  std::vector<TubeClearanceIndex::Tube> tubes;
+  std::vector<int> tube_of(cables.size(), -1), cable_of;
+  double widest_asked = 0.0;
+  for (size_t i = 0; i < cables.size(); ++i) {
+    if (cables[i].centreline == nullptr || cables[i].centreline->size() < 2) continue;
+    tube_of[i] = static_cast<int>(tubes.size());
+    cable_of.push_back(static_cast<int>(i));
+    tubes.push_back({cables[i].centreline, cables[i].radius});
+    widest_asked = std::max(widest_asked, cables[i].min_clearance);
+  }
+  const TubeClearanceIndex index(tubes);
+  const auto skip = [&](int a, int b) {
+    return JunctionSkip(cables[static_cast<size_t>(cable_of[static_cast<size_t>(a)])],
+                        cables[static_cast<size_t>(cable_of[static_cast<size_t>(b)])]);
+  };
+  std::vector<std::vector<int>> partners(cables.size());  // j > i measured with cable i
+  for (size_t t = 0; t < tubes.size(); ++t) {
+    const int i = cable_of[t];
+    const int nearest = index.Nearest(static_cast<int>(t), skip);
+    if (nearest >= 0) {
+      const int j = cable_of[static_cast<size_t>(nearest)];
+      partners[static_cast<size_t>(std::min(i, j))].push_back(std::max(i, j));
+    }
+    if (widest_asked > 0) {
+      for (int other : index.Within(static_cast<int>(t), widest_asked)) {
+        const int j = cable_of[static_cast<size_t>(other)];
+        const double asked = std::max(cables[static_cast<size_t>(i)].min_clearance,
+                                      cables[static_cast<size_t>(j)].min_clearance);
+        if (j > i && asked > 0) partners[static_cast<size_t>(i)].push_back(j);
+      }
+    }
+  }
   std::vector<ClearancePair> pairs;
   for (size_t i = 0; i < cables.size(); ++i) {
     const ClearanceCable& c = cables[i];
-    if (c.centreline == nullptr || c.centreline->size() < 2) continue;
+    if (tube_of[i] < 0) continue;
     for (const ClearanceSolid& s : solids) {
       if (s.geometry == nullptr || s.geometry->empty()) continue;
       ClearancePair p;
@@ -42,9 +76,11 @@ std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& 
           p.hit.clearance <= kRestingFraction * c.radius;
       pairs.push_back(p);
     }
-    for (size_t j = i + 1; j < cables.size(); ++j) {
-      const ClearanceCable& d = cables[j];
-      if (d.centreline == nullptr || d.centreline->size() < 2) continue;
+    std::vector<int>& with = partners[i];
+    std::sort(with.begin(), with.end());
+    with.erase(std::unique(with.begin(), with.end()), with.end());
+    for (int j : with) {
+      const ClearanceCable& d = cables[static_cast<size_t>(j)];
       ClearancePair p;
       p.cable = c.name;
       p.other = d.name;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <unordered_map>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/solver/rod_simulation.h"
@@ -150,16 +151,20 @@ json::Json RelaxedFileToJson(const RelaxedFile& f, const HarnessConfig& config) 
         cables.back()["kbl"] = it->second;
     }
   }
-  // Per cable, its smallest clearance to anything it does not rest on.
-  for (json::Json& c : cables) {
-    const ClearancePair* least = nullptr;
-    for (const ClearancePair& p : f.clearances) {
-      const std::string name = c["name"].get<std::string>();
-      if (p.rests_on || (p.cable != name && p.other != name)) continue;
-      if (!least || p.hit.clearance < least->hit.clearance) least = &p;
+  // Per cable, its smallest clearance to anything it does not rest on (the first such pair on
+  // a tie).
+  std::unordered_map<std::string, const ClearancePair*> least;
+  for (const ClearancePair& p : f.clearances) {
+    if (p.rests_on) continue;
+    for (const std::string* name : {&p.cable, &p.other}) {
+      if (name == &p.other && p.other_is_solid) continue;
+      const ClearancePair*& l = least[*name];
+      if (!l || p.hit.clearance < l->hit.clearance) l = &p;
     }
-    if (least) c["clearance"] = ClearancePairToJson(*least);
   }
+  for (json::Json& c : cables)
+    if (const auto it = least.find(c["name"].get<std::string>()); it != least.end())
+      c["clearance"] = ClearancePairToJson(*it->second);
   if (f.motion) {
     for (const CableMotion& m : f.motion->cables)
       cables[static_cast<size_t>(m.cable)]["motion"] = CableMotionToJson(m, f.motion->config);

@@ -35,12 +35,13 @@ Eigen::Matrix3Xd WrittenWideAxes(const Polyline& written, const RodSolution* sol
   CABLEFIT_REQUIRE(drawn.flat.has_value(), "WrittenWideAxes needs a flat cable");
   const bool relaxed = solution != nullptr && HasMaterialFrames(*solution);
   Eigen::Matrix3Xd axes(3, written.size());  // 3 x n unit
+  const RouteProjector drawn_route(drawn.centreline);
   for (Eigen::Index i = 0; i < written.size(); ++i) {
     Vec3 axis;
     if (relaxed) {
       axis = MaterialD1(*solution, written.s[i]);
     } else {
-      const double s = NearestArcLength(drawn.centreline, written.points.col(i));
+      const double s = drawn_route.NearestArcLength(written.points.col(i));
       axis = NormalAt(drawn.centreline, drawn.flat->wide_axes, s);
     }
     const Vec3 tangent = RouteTangent(written, written.s[i]);

@@ -74,8 +74,9 @@ std::vector<Candidate> Place(std::vector<Candidate> all, double gap,
 // square to the route.
 Eigen::Matrix3Xd FlatNormals(const DrawnCable& drawn, const Polyline& route) {
   Eigen::Matrix3Xd normals(3, route.size());
+  const RouteProjector projector(drawn.centreline);
   for (Eigen::Index i = 0; i < route.size(); ++i) {
-    const double s = NearestArcLength(drawn.centreline, route.points.col(i));
+    const double s = projector.NearestArcLength(route.points.col(i));
     const Vec3 axis = NormalAt(drawn.centreline, drawn.flat->wide_axes, s);
     const Vec3 tangent = RouteTangent(route, route.s[i]);
     normals.col(i) = (axis - axis.dot(tangent) * tangent).normalized();
@@ -270,10 +271,11 @@ int OutputSamples(double length) {
 void MeasureSpringbackAndSag(const Polyline& weightless, CableRelaxation* out) {
   CableRelaxation& r = *out;
   const Polyline shape = SampleCenterline(weightless, r.relaxed.s);
+  const RouteProjector drawn(r.setup.route);
   double springback = 0.0, sag = 0.0;
   for (int i = 0; i < shape.size(); ++i) {
     double d = 0.0;
-    NearestArcLength(r.setup.route, shape.points.col(i), &d);
+    drawn.NearestArcLength(shape.points.col(i), &d);
     springback = std::max(springback, d);
     sag = std::max(sag, (r.relaxed.points.col(i) - shape.points.col(i)).norm());
   }
@@ -337,9 +339,10 @@ void MeasureRelaxation(double min_bend_radius_factor, CableRelaxation* out) {
   r.deviation.resize(n);
   r.max_deviation = 0.0;
   double sum_sq = 0.0;
+  const RouteProjector drawn(r.setup.route);
   for (int i = 0; i < n; ++i) {
     double d = 0.0;
-    NearestArcLength(r.setup.route, r.relaxed.points.col(i), &d);
+    drawn.NearestArcLength(r.relaxed.points.col(i), &d);
     r.deviation[i] = d;
     sum_sq += d * d;
     if (d > r.max_deviation) {

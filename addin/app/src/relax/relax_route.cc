@@ -157,19 +157,63 @@ Vec3 NormalAt(const Polyline& route, const Eigen::Matrix3Xd& normals, double s) 
   return d1.normalized();
 }
 
+namespace {
+
+// Distance of `p` to segment i of `route` and the arc length of its nearest point there.
+double SegmentDistance(const Polyline& route, Eigen::Index i, const Vec3& p, double* s) {
+  const Vec3 a = route.points.col(i);
+  const Vec3 ab = route.points.col(i + 1) - a;
+  const double w = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  *s = route.s[i] + w * (route.s[i + 1] - route.s[i]);
+  return (a + w * ab - p).norm();
+}
+
+std::vector<Eigen::AlignedBox3d> SegmentBoxes(const Polyline& route) {
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (Eigen::Index i = 0; i + 1 < route.size(); ++i) {
+    Eigen::AlignedBox3d b(Vec3(route.points.col(i)));
+    b.extend(Vec3(route.points.col(i + 1)));
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+}  // namespace
+
 double NearestArcLength(const Polyline& route, const Vec3& p, double* distance) {
   double best = std::numeric_limits<double>::infinity();
   double best_s = 0.0;
   for (Eigen::Index i = 0; i + 1 < route.size(); ++i) {
-    const Vec3 a = route.points.col(i);
-    const Vec3 ab = route.points.col(i + 1) - a;
-    const double w = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    const double d = (a + w * ab - p).norm();
+    double s = 0.0;
+    const double d = SegmentDistance(route, i, p, &s);
     if (d < best) {
       best = d;
-      best_s = route.s[i] + w * (route.s[i + 1] - route.s[i]);
+      best_s = s;
     }
   }
+  if (distance) *distance = best;
+  return best_s;
+}
+
+RouteProjector::RouteProjector(const Polyline& route) : route_(route), tree_(SegmentBoxes(route), 8) {}
+
+double RouteProjector::NearestArcLength(const Vec3& p, double* distance) const {
+  double best_s = 0.0;
+  Eigen::Index best_i = -1;
+  const double best = tree_.Nearest(
+      [&](const Eigen::AlignedBox3d& box) { return box.exteriorDistance(p); },
+      [&](int k, double best_d) {
+        double s = 0.0;
+        const double d = SegmentDistance(route_, k, p, &s);
+        // Ties go to the first segment, as the plain scan's strict comparison does.
+        if (d < best_d || (d == best_d && k < best_i)) {
+          best_i = k;
+          best_s = s;
+          return d;
+        }
+        return best_d;
+      },
+      std::numeric_limits<double>::infinity());
   if (distance) *distance = best;
   return best_s;
 }

@@ -3,6 +3,7 @@
 // What `cablefit relax` needs to place supports at their drawn pose and to measure deviation.
 #pragma once
 
+#include "cablefit/core/base/box_tree.h"
 #include "cablefit/core/base/geometry_types.h"
 
 namespace cablefit::addin {
@@ -35,6 +36,21 @@ Eigen::Matrix3Xd TransportedNormals(const Polyline& route, const Vec3& d1_start)
 Vec3 NormalAt(const Polyline& route, const Eigen::Matrix3Xd& normals, double s);
 
 /// Arc length of the route point nearest `p`; `distance` (optional) receives that distance [m].
+/// Measures every segment: for one query. Many points against one route: RouteProjector.
 double NearestArcLength(const Polyline& route, const Vec3& p, double* distance = nullptr);
+
+/// NearestArcLength for many points on one route: the route's segments in a BoxTree, so a
+/// query measures only the segments whose box could hold a nearer point (a relaxed cable's
+/// deviation on a finely sampled drawing: thousands of points against thousands of segments).
+/// Same answers as NearestArcLength (ties to the first segment). `route` must outlive it.
+class RouteProjector {
+ public:
+  explicit RouteProjector(const Polyline& route);
+  double NearestArcLength(const Vec3& p, double* distance = nullptr) const;
+
+ private:
+  const Polyline& route_;
+  BoxTree tree_;
+};
 
 }  // namespace cablefit::addin

@@ -167,5 +167,26 @@ TEST(RelaxClips, BoundingBoxOfATiltedBoxIsTheBoxItself) {
   EXPECT_FALSE(box.Contains(Vec3(1, 2, 3) + rot * Vec3(0.0, 0.011, 0.0)));
 }
 
+// The indexed projection answers what the scan of every segment answers, on a route sampled
+// as finely as KBL curves are, for points near it and far from it.
+TEST(RelaxRoute, RouteProjectorIsTheScansNearestPoint) {
+  Polyline route;
+  route.points.resize(3, 4001);
+  for (int i = 0; i <= 4000; ++i) {
+    const double t = 1e-3 * i;
+    route.points.col(i) = Vec3(t, 0.2 * std::sin(3 * t), 0.05 * std::cos(7 * t));
+  }
+  route.ParameteriseByChords();
+  const RouteProjector projector(route);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 p(0.02 * k, 0.3 * std::cos(k), 0.1 * std::sin(0.7 * k));
+    double d_scan = 0.0, d_tree = 0.0;
+    const double s_scan = NearestArcLength(route, p, &d_scan);
+    const double s_tree = projector.NearestArcLength(p, &d_tree);
+    EXPECT_EQ(s_tree, s_scan) << k;
+    EXPECT_EQ(d_tree, d_scan) << k;
+  }
+}
+
 }  // namespace
 }  // namespace cablefit::addin

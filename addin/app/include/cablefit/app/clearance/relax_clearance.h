@@ -51,8 +51,11 @@ inline constexpr double kRestingFraction = 0.01;
 /// an end is left out of their clearance (two branches leaving at 30 degrees are apart by then).
 inline constexpr double kJunctionSkipFactor = 4.0;
 
-/// Every cable against every solid (with a surface) and every other cable, cables in the given
-/// order, solids in theirs. Deterministic.
+/// Every cable against every solid (with a surface); against the other cables, the pair with
+/// its nearest other cable and every pair close enough to break the min_clearance asked of it
+/// (a cable's least clearance is therefore always among the pairs). Pairs far apart are never
+/// measured. Cables in the given order, each with its solids, then its pairs with later
+/// cables. Deterministic.
 std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& cables,
                                              const std::vector<ClearanceSolid>& solids);
 

@@ -9,9 +9,11 @@
 // Ericson, "Real-Time Collision Detection" (2005), sec. 5.1.9) minus both radii.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <vector>
 
+#include "cablefit/core/base/box_tree.h"
 #include "cablefit/core/base/geometry_types.h"
 #include "cablefit/core/network/network_spec.h"
 
@@ -58,6 +60,37 @@ struct TubeSkip {
 };
 ClearanceHit TubeToTubeClearance(const Polyline& a, double ra, const TubeSkip& skip_a,
                                  const Polyline& b, double rb, const TubeSkip& skip_b);
+
+/// Many tubes indexed for clearance between them: every segment of every tube in one BoxTree,
+/// so that the nearest other tube of each is found by
+/// measuring only the segment pairs that could come closer than the best found so far, never
+/// the pairs far apart. Answers as TubeToTubeClearance gives them pair by pair.
+class TubeClearanceIndex {
+ public:
+  struct Tube {
+    const Polyline* centreline = nullptr;  ///< s [m], points 3 x n [m]; must outlive the index
+    double radius = 0.0;                   ///< [m]
+  };
+  /// What TubeToTubeClearance leaves out of tube `a` in its pair with tube `b`.
+  using PairSkip = std::function<TubeSkip(int a, int b)>;
+
+  explicit TubeClearanceIndex(std::vector<Tube> tubes);
+
+  /// The other tube whose surface comes closest to tube `i`'s, -1 when none can be measured;
+  /// `clearance` [m] (optional) receives the pair's TubeToTubeClearance. Ties go to the lower
+  /// index.
+  int Nearest(int i, const PairSkip& skip, double* clearance = nullptr) const;
+  /// The other tubes whose surfaces may come within `reach` [m] of tube `i`'s (a superset:
+  /// their boxes do), in increasing order.
+  std::vector<int> Within(int i, double reach) const;
+
+ private:
+  std::vector<Tube> tubes_;
+  std::vector<std::pair<int, int>> segments_;  // (tube, segment): BoxTree primitives
+  std::vector<Eigen::AlignedBox3d> boxes_;     // each segment's box (of its centreline)
+  double widest_ = 0.0;                        // [m] the largest radius
+  BoxTree tree_;
+};
 
 /// Closest points of segments [p0, p1] and [q0, q1]: parameters (s, t) in [0, 1]^2.
 void ClosestSegmentParameters(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1,
