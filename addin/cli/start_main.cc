@@ -16,6 +16,7 @@
 #include <system_error>
 #include <vector>
 
+#include "cablefit/app/base/provenance.h"
 #include "cablefit/cli/commands.h"
 
 namespace {
@@ -31,6 +32,11 @@ std::filesystem::path FullExecutable() {
 int main(int argc, char** argv) {
   if (argc > 1) {
     const std::string command = argv[1];
+    // Scripts ask for the version to check what they run: answered without the full tool.
+    if (command == "--version" && argc == 2) {
+      std::printf("%s\n", cablefit::addin::ToolVersion().c_str());
+      return 0;
+    }
     if (command == "simulate" || command == "section" || command == "diagnose") {
       return cablefit::addin::RunCommandLineWith(
           argc, argv,

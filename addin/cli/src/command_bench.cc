@@ -18,6 +18,7 @@
 #include "cablefit/formats/case_reader.h"
 #include "bench_diagnose.h"
 #include "bench_motion.h"
+#include "bench_relax.h"
 
 namespace cablefit::addin {
 namespace {
@@ -260,6 +261,8 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
   auto reps = std::make_shared<int>(21);
   auto kbl_only = std::make_shared<bool>(false);
   auto drawn_only = std::make_shared<bool>(false);
+  auto relax_files = std::make_shared<std::vector<std::string>>();
+  auto processes = std::make_shared<bool>(false);
   auto* cmd = app.add_subcommand("bench", "Print performance figures (name: value unit)");
   cmd->add_option("--case", *case_path, "case.json to time instead of the built-in sagging cable");
   cmd->add_option("--repeat", *reps, "repetitions per figure (the median is printed)")
@@ -273,7 +276,22 @@ void RegisterBenchCommand(CLI::App& app, int* exit_code) {
                "instead: only the KBL-sized network figures (kbl_network*)");
   cmd->add_flag("--drawn-shapes", *drawn_only,
                "instead: only the cables drawn as coils, springs, kinks and taut (drawn_*)");
+  cmd->add_option("--relax", *relax_files,
+                  "instead: relax each FILE end to end as `cablefit relax FILE` does (pictures and "
+                  "STEP included), --repeat times (default here 3), the median run's seconds per "
+                  "stage and its network (relax_<stem>_*)");
+  cmd->add_flag("--processes", *processes,
+                "instead: whole `cablefit --version` and `cablefit simulate` processes, start-up "
+                "included (process_*)");
   cmd->callback([=] {
+    if (!relax_files->empty()) {
+      *exit_code = BenchRelaxFiles(*relax_files, cmd->count("--repeat") ? *reps : 3);
+      return;
+    }
+    if (*processes) {
+      *exit_code = BenchProcesses(*reps);
+      return;
+    }
     if (*kbl_only || *drawn_only) {
       if (*kbl_only) {
         BenchKblSizedNetwork();

@@ -6,6 +6,7 @@
 
 #include "cablefit/cli/commands.h"
 #include "cablefit/core/solver/rod_simulation.h"
+#include "cablefit/formats/atomic_file.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/app/output/solution_json.h"
@@ -25,6 +26,8 @@ struct SimulateArgs {
 };
 
 int RunSimulate(const SimulateArgs& a) {
+  // A simulate is made again in milliseconds; syncing its two files cost several times that.
+  SetDurableWrites(false);
   SimulationOptions opt;
   opt.accuracy = a.accuracy;
   std::string why;

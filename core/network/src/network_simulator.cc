@@ -37,6 +37,8 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
   NetworkSimulation out;
   NetworkSolution last_converged;
   const NetworkSolution coarse = CoarseStart(spec, options);
+  out.coarse_start = coarse.summary;
+  out.coarse_start_elements = coarse.num_elements;
   const RefinedSolution refined = SolveRefined(plan, [&](int level) {
     NetworkOptions at = options;
     at.refinement = level;
@@ -58,6 +60,7 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
       out.finest = SolveNetwork(spec, at);
     }
     out.level_elements.push_back(out.finest.num_elements);
+    out.level_summaries.push_back(out.finest.summary);
     if (out.finest.converged()) last_converged = out.finest;
     return LevelSolution{out.finest.branches, out.finest.summary};
   });
@@ -77,6 +80,7 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
                                  : out.finest.summary.message;
     out.finest = std::move(last_converged);
     out.level_elements.pop_back();
+    out.level_summaries.pop_back();
     out.converged = true;
     out.estimated_error = refined.levels.EstimatedError().total();
     out.accuracy_met = out.estimated_error <= plan.accuracy;

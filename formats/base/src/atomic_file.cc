@@ -16,6 +16,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::atomic<bool>& Durable() {
+  static std::atomic<bool> durable{true};
+  return durable;
+}
+
 // ".<name>.tmp.<pid>.<counter>.<random>": hidden, in the target's folder (so the rename stays
 // on one file system), unique across threads (the counter), processes (the pid) and hosts
 // sharing a folder (the random part).
@@ -76,13 +81,17 @@ AtomicFile::~AtomicFile() {
   fs::remove(temp_, ignored);
 }
 
+void SetDurableWrites(bool durable) { Durable() = durable; }
+bool DurableWrites() { return Durable(); }
+
 void AtomicFile::Commit() {
-  SyncFile(temp_, path_);
+  const bool durable = DurableWrites();
+  if (durable) SyncFile(temp_, path_);
   std::error_code ec;
   fs::rename(temp_, path_, ec);
   if (ec) throw FileError(path_, "cannot replace file: " + ec.message());
   committed_ = true;
-  SyncDirectory(fs::path(path_).parent_path());
+  if (durable) SyncDirectory(fs::path(path_).parent_path());
 }
 
 void WriteFileAtomically(const std::string& path,

@@ -369,6 +369,16 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
                         {"solid", drawing.solids[group.obstacles[c.obstacle]].name},
                         {"point", ToJson(c.point)},
                         {"force", ToJson(c.force)}});
+  // What each level cost, so a slow harness shows where its time went.
+  auto level_json = [](int elements, const StaticsSummary& sum) {
+    return Json{{"elements", elements},
+                {"iterations", sum.iterations},
+                {"continuation_steps", sum.continuation_steps},
+                {"seconds", sum.seconds}};
+  };
+  Json levels = Json::array();
+  for (size_t l = 0; l < sim.level_summaries.size() && l < sim.level_elements.size(); ++l)
+    levels.push_back(level_json(sim.level_elements[l], sim.level_summaries[l]));
   out.json = {{"cables", cables},
               {"junctions", junctions},
               {"contacts", contacts},
@@ -377,6 +387,8 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
               {"converged", converged},
               {"stable", fine.summary.stable},
               {"estimated_error", NumberOrNull(error)},
+              {"levels", levels},
+              {"coarse_start", level_json(sim.coarse_start_elements, sim.coarse_start)},
               {"message", fine.summary.message},
               {"seconds", seconds}};
   return out;

@@ -1,7 +1,8 @@
 // Atomic file output, the one writer every format uses: a reader never sees a half-written file,
-// a failed writer never destroys the previous version, and a crash right after a successful
-// write loses neither the contents nor the new name (write to a temporary file in the target's
-// folder, fsync it, rename it over the target, fsync the folder).
+// a failed writer never destroys the previous version, and (durable writes, the default) a crash
+// of the machine right after a successful write loses neither the contents nor the new name
+// (write to a temporary file in the target's folder, fsync it, rename it over the target, fsync
+// the folder).
 #pragma once
 
 #include <filesystem>
@@ -26,7 +27,8 @@ class AtomicFile {
   const std::string& path() const { return path_; }
   const std::filesystem::path& temp_path() const { return temp_; }
 
-  /// fsyncs the temporary file, renames it over path() and fsyncs the folder. FileError naming
+  /// fsyncs the temporary file, renames it over path() and fsyncs the folder (without the
+  /// fsyncs when DurableWrites() is off). FileError naming
   /// path() on failure (the temporary file is removed, path() is left as it was).
   void Commit();
 
@@ -35,6 +37,13 @@ class AtomicFile {
   std::filesystem::path temp_;
   bool committed_ = false;
 };
+
+/// Whether commits fsync (default true). A command whose outputs are cheaper to make again than
+/// to sync turns it off once, before it writes anything: `cablefit simulate`, whose two small
+/// files took several times its solve to fsync (a device flush each, more under other I/O). The
+/// writes stay atomic (rename): a crash of the process leaves the old file or the new one.
+void SetDurableWrites(bool durable);
+bool DurableWrites();
 
 /// Creates the parent directories of `path`, calls `writer` on a stream to a temporary file next
 /// to `path`, then commits it (see AtomicFile). If `writer` throws or any step fails, the

@@ -20,6 +20,10 @@ struct NetworkSimulation {
   std::vector<Polyline> centerlines;
   double estimated_error = 0.0;     // [m] see RichardsonLevels::EstimatedError
   std::vector<int> level_elements;  // elements per level solved
+  std::vector<StaticsSummary> level_summaries;  // per level solved (iterations, seconds, ...)
+  /// The solve on elements four times as long that the first level starts from.
+  StaticsSummary coarse_start;
+  int coarse_start_elements = 0;
   int newton_iterations = 0;        // over all levels
   bool converged = false;           // every level converged
   bool accuracy_met = false;
