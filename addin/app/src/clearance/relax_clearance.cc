@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "cablefit/app/base/batch_pool.h"
+#include "cablefit/core/base/parallel_for.h"
+
 
 namespace cablefit::addin {
 
@@ -43,27 +46,35 @@ std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& 
     return JunctionSkip(cables[static_cast<size_t>(cable_of[static_cast<size_t>(a)])],
                         cables[static_cast<size_t>(cable_of[static_cast<size_t>(b)])]);
   };
+  // Each tube's queries on every core, each into its own slot.
+  const int nt = static_cast<int>(tubes.size());
+  std::vector<int> nearest(tubes.size(), -1);
+  std::vector<std::vector<int>> within(tubes.size());
+  ParallelFor(nt, UsableCores(), [&](int t) {
+    nearest[static_cast<size_t>(t)] = index.Nearest(t, skip);
+    if (widest_asked > 0) within[static_cast<size_t>(t)] = index.Within(t, widest_asked);
+  });
   std::vector<std::vector<int>> partners(cables.size());  // j > i measured with cable i
   for (size_t t = 0; t < tubes.size(); ++t) {
     const int i = cable_of[t];
-    const int nearest = index.Nearest(static_cast<int>(t), skip);
-    if (nearest >= 0) {
-      const int j = cable_of[static_cast<size_t>(nearest)];
+    if (nearest[t] >= 0) {
+      const int j = cable_of[static_cast<size_t>(nearest[t])];
       partners[static_cast<size_t>(std::min(i, j))].push_back(std::max(i, j));
     }
-    if (widest_asked > 0) {
-      for (int other : index.Within(static_cast<int>(t), widest_asked)) {
-        const int j = cable_of[static_cast<size_t>(other)];
-        const double asked = std::max(cables[static_cast<size_t>(i)].min_clearance,
-                                      cables[static_cast<size_t>(j)].min_clearance);
-        if (j > i && asked > 0) partners[static_cast<size_t>(i)].push_back(j);
-      }
+    for (int other : within[t]) {
+      const int j = cable_of[static_cast<size_t>(other)];
+      const double asked = std::max(cables[static_cast<size_t>(i)].min_clearance,
+                                    cables[static_cast<size_t>(j)].min_clearance);
+      if (j > i && asked > 0) partners[static_cast<size_t>(i)].push_back(j);
     }
   }
-  std::vector<ClearancePair> pairs;
-  for (size_t i = 0; i < cables.size(); ++i) {
+  // Every cable's pairs, measured on every core and listed in cable order.
+  std::vector<std::vector<ClearancePair>> per_cable(cables.size());
+  ParallelFor(static_cast<int>(cables.size()), UsableCores(), [&](int ci) {
+    const size_t i = static_cast<size_t>(ci);
     const ClearanceCable& c = cables[i];
-    if (tube_of[i] < 0) continue;
+    if (tube_of[i] < 0) return;
+    std::vector<ClearancePair>& pairs = per_cable[i];
     for (const ClearanceSolid& s : solids) {
       if (s.geometry == nullptr || s.geometry->empty()) continue;
       ClearancePair p;
@@ -76,7 +87,7 @@ std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& 
           p.hit.clearance <= kRestingFraction * c.radius;
       pairs.push_back(p);
     }
-    std::vector<int>& with = partners[i];
+    std::vector<int>& with = partners[i];  // this cable's own slot
     std::sort(with.begin(), with.end());
     with.erase(std::unique(with.begin(), with.end()), with.end());
     for (int j : with) {
@@ -90,7 +101,10 @@ std::vector<ClearancePair> MeasureClearances(const std::vector<ClearanceCable>& 
       p.required = std::max(c.min_clearance, d.min_clearance);
       if (p.hit.found()) pairs.push_back(p);
     }
-  }
+  });
+  std::vector<ClearancePair> pairs;
+  for (std::vector<ClearancePair>& some : per_cable)
+    for (ClearancePair& p : some) pairs.push_back(std::move(p));
   return pairs;
 }
 

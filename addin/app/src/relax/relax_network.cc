@@ -10,6 +10,7 @@
 
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "cablefit/core/base/parallel_for.h"
 #include "cablefit/core/network/network_simulator.h"
 #include "cablefit/app/base/batch_pool.h"
 #include "relax/relax_route.h"
@@ -29,8 +30,9 @@ void SplitSpringbackAndSag(const NetworkSpec& spec, const NetworkOptions& opt,
   try {
     const NetworkSimulation sim = SimulateWithoutGravity(spec, opt, loaded.branches, loaded.element_normals);
     if (!sim.converged) return unknown("the solve without gravity did not converge");
-    for (size_t b = 0; b < out->cables.size(); ++b)
-      MeasureSpringbackAndSag(sim.centerlines[b], &out->cables[b]);
+    ParallelFor(static_cast<int>(out->cables.size()), UsableCores(), [&](int b) {
+      MeasureSpringbackAndSag(sim.centerlines[static_cast<size_t>(b)], &out->cables[static_cast<size_t>(b)]);
+    });
   } catch (const std::exception& e) {
     unknown(e.what());
   }
@@ -215,18 +217,21 @@ NetworkSpec GroupNetworkSpec(const HarnessDrawing& drawing, const RelaxGroup& gr
   for (int b = 0; b < nb; ++b) branch_of[group.cables[b]] = b;
   NetworkSpec spec;
   spec.name = GroupLabel(drawing, group);
-  setups->clear();
+  std::vector<JunctionEnds> ends(static_cast<size_t>(nb));
+  for (const RelaxGroup::Junction& j : group.junctions)
+    for (const CableJunction::End& e : j.ends) {
+      JunctionEnds& at = ends[static_cast<size_t>(branch_of[e.cable])];
+      (e.at_start ? at.start : at.end) = true;
+      at.description = "solved as one network with the cables it meets at " + j.name;
+    }
+  // Each cable's set-up (its drawn route's frames, supports) is its own: on every core.
+  setups->assign(static_cast<size_t>(nb), CableSetup{});
+  ParallelFor(nb, UsableCores(), [&](int b) {
+    (*setups)[static_cast<size_t>(b)] =
+        SetUpCable(drawing, group.cables[static_cast<size_t>(b)], boxes, config, ends[static_cast<size_t>(b)]);
+  });
   for (int b = 0; b < nb; ++b) {
-    const int c = group.cables[b];
-    JunctionEnds ends;
-    for (const RelaxGroup::Junction& j : group.junctions)
-      for (const CableJunction::End& e : j.ends)
-        if (e.cable == c) {
-          (e.at_start ? ends.start : ends.end) = true;
-          ends.description = "solved as one network with the cables it meets at " + j.name;
-        }
-    setups->push_back(SetUpCable(drawing, c, boxes, config, ends));
-    const CableSetup& su = setups->back();
+    const CableSetup& su = (*setups)[static_cast<size_t>(b)];
     BranchSpec br;
     br.name = su.name;
     br.length = su.spec.length;
@@ -287,18 +292,18 @@ GroupRelaxation RelaxNetworkGroup(const HarnessDrawing& drawing, const RelaxGrou
   const double error = sim.estimated_error;
   GroupRelaxation out;
   const auto measured = std::chrono::steady_clock::now();
-  for (int b = 0; b < nb; ++b) {
-    CableRelaxation r;
-    r.setup = setups[b];
+  out.cables.resize(static_cast<size_t>(nb));
+  ParallelFor(nb, UsableCores(), [&](int b) {
+    CableRelaxation& r = out.cables[static_cast<size_t>(b)];
+    r.setup = setups[static_cast<size_t>(b)];
     SimulationResult& res = r.result;
     res.converged = converged;
     res.newton_iterations = sim.newton_iterations;
     res.level_elements = sim.level_elements;
     res.solution = BranchSolution(spec, fine, b);
-    res.solution.centerline = sim.centerlines[b];  // extrapolated; frames of the finest level
+    res.solution.centerline = sim.centerlines[static_cast<size_t>(b)];  // extrapolated; frames of the finest level
     MeasureRelaxation(config.min_bend_radius_factor, &r);
-    out.cables.push_back(std::move(r));
-  }
+  });
   SplitSpringbackAndSag(spec, opt, fine, &out);
   const double measure_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - measured).count();

@@ -110,14 +110,19 @@ Vec3 RouteTangent(const Polyline& route, double s) {
   const Eigen::Index centre = Segment(route, s);
   const Eigen::Index first = std::clamp<Eigen::Index>(centre - window / 2 + 1, 0, n - window);
   const double scale = route.s[first + window - 1] - route.s[first];  // keeps A well scaled
-  Eigen::MatrixXd a(window, degree + 1);
-  Eigen::MatrixXd b(window, 3);
+  // Fixed-size storage (at most 6 x 4): a KBL route has thousands of samples, each fitted once
+  // for its transported frame, and heap-allocated matrices were most of that.
+  using Design = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 4>;
+  using Values = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 6, 3>;
+  Design a(window, degree + 1);
+  Values b(window, 3);
   for (Eigen::Index k = 0; k < window; ++k) {
     const double t = (route.s[first + k] - s) / scale;
     for (int p = 0; p <= degree; ++p) a(k, p) = std::pow(t, p);
     b.row(k) = route.points.col(first + k).transpose();
   }
-  const Eigen::MatrixXd coeff = a.colPivHouseholderQr().solve(b);  // (degree+1) x 3
+  const Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 4, 3> coeff =
+      a.colPivHouseholderQr().solve(b);  // (degree+1) x 3
   const Vec3 d = coeff.row(1).transpose();
   // Drawn points that coincide around s leave no direction: bad geometry, not a bug.
   if (!(d.norm() > 0))
