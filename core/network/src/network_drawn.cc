@@ -75,10 +75,14 @@ std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
     const internal::BranchLayout& lay = net.branches[b];
     const Polyline route = ReparameteriseToLength(routes ? (*routes)[b] : br.route, br.length);
     const size_t ne = lay.elements.size();
+    // A start from a coarser solution (a level's, on longer elements) is followed as a smooth
+    // curve; its own chords would kink at every coarse node.
+    const bool from_coarser = routes && static_cast<size_t>(route.size()) < ne + 1;
+    auto at = [&](double s) { return from_coarser ? SmoothPointAt(route, s) : PointAt(route, s); };
     std::vector<Vec3> t(ne), d1(ne);
     std::vector<double> mid_s(ne);
     for (size_t k = 0; k < ne; ++k) {
-      const Vec3 chord = PointAt(route, lay.node_s[k + 1]) - PointAt(route, lay.node_s[k]);
+      const Vec3 chord = at(lay.node_s[k + 1]) - at(lay.node_s[k]);
       t[k] = chord.norm() > 0 ? Vec3(chord.normalized()) : (k > 0 ? t[k - 1] : Vec3::UnitX());
       d1[k] = k == 0 ? Vec3(t[k].unitOrthogonal()) : Transport(d1[k - 1], t[k - 1], t[k]);
       mid_s[k] = 0.5 * (lay.node_s[k] + lay.node_s[k + 1]);

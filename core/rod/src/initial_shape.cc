@@ -40,6 +40,23 @@ Vec3 PointAt(const Polyline& c, double s) {
   return (1 - w) * c.points.col(i) + w * c.points.col(i + 1);
 }
 
+Vec3 SmoothPointAt(const Polyline& c, double s) {
+  const int n = c.size();
+  if (n < 3 || s <= c.s[0] || s >= c.s[n - 1]) return PointAt(c, s);
+  const int i = static_cast<int>(std::upper_bound(c.s.data(), c.s.data() + n, s) - c.s.data()) - 1;
+  const double h = c.s[i + 1] - c.s[i];
+  if (!(h > 0)) return PointAt(c, s);
+  // Tangent (d point / ds) at sample k: central difference, one-sided at the ends.
+  auto tangent = [&](int k) -> Vec3 {
+    const int a = std::max(k - 1, 0), b = std::min(k + 1, n - 1);
+    const double ds = c.s[b] - c.s[a];
+    return ds > 0 ? Vec3((c.points.col(b) - c.points.col(a)) / ds) : Vec3::Zero();
+  };
+  const double t = (s - c.s[i]) / h, t2 = t * t, t3 = t2 * t;
+  return (2 * t3 - 3 * t2 + 1) * c.points.col(i) + (t3 - 2 * t2 + t) * h * tangent(i) +
+         (-2 * t3 + 3 * t2) * c.points.col(i + 1) + (t3 - t2) * h * tangent(i + 1);
+}
+
 Polyline ReparameteriseToLength(const Polyline& curve, double length) {
   if (curve.size() < 2) throw InvalidInput("a shape needs at least 2 points");
   if (!curve.points.allFinite()) throw InvalidInput("the shape has non-finite coordinates");

@@ -1,6 +1,7 @@
 // Position constraints of the supports: c_k = P_k (r(node_k) - p_k) = 0, where node positions are
 // prefix sums of h_j d3_j from the anchor support. P_k is the identity, or the two directions
-// across the support's axis for a sliding support.
+// across the support's axis for a sliding support. The rows the solver works with are measured
+// from RodSupport::row_reference (the rows' basis); the reactions from `reference` (physics).
 #include <algorithm>
 #include <cstdlib>
 #include <utility>
@@ -53,7 +54,7 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
     size_t entries = 0;
     for (int k : by_row) {
       const RodSupport& sp = model.supports[k];
-      const int from = sp.reference >= 0 ? model.supports[sp.reference].node : -1;
+      const int from = sp.row_reference >= 0 ? model.supports[sp.row_reference].node : -1;
       size_t path = 0;
       model.ForEachPathElementFrom(from, sp.node, [&](int, int) { ++path; });
       entries += 3 * path * static_cast<size_t>(sp.constraint_rows);
@@ -67,9 +68,9 @@ void EvaluatePositionConstraints(const RodModel& model, const RodState& state, E
     const auto p = ConstraintProjector(sp, state, k);
     Vec3 gap = r.col(sp.node) - state.support_position[k];
     int from = -1;
-    if (sp.reference >= 0) {
-      const RodSupport& ref = model.supports[sp.reference];
-      gap -= r.col(ref.node) - state.support_position[sp.reference];
+    if (sp.row_reference >= 0) {
+      const RodSupport& ref = model.supports[sp.row_reference];
+      gap -= r.col(ref.node) - state.support_position[sp.row_reference];
       from = ref.node;
     }
     c->segment(sp.constraint_row, sp.constraint_rows) = p * gap;
@@ -123,7 +124,7 @@ void AddConstraintCurvature(const RodModel& model, const RodState& state,
     if (sp.constraint_row < 0) continue;
     const auto p = ConstraintProjector(sp, state, static_cast<int>(k));
     const Vec3 force = p.transpose() * lambda.segment(sp.constraint_row, sp.constraint_rows);
-    const int from = sp.reference >= 0 ? model.supports[sp.reference].node : -1;
+    const int from = sp.row_reference >= 0 ? model.supports[sp.row_reference].node : -1;
     model.ForEachPathElementFrom(
         from, sp.node, [&](int j, int sign) { a[j] += sign * model.element_length[j] * force; });
   }

@@ -19,6 +19,7 @@ void BuildNodeTree(RodModel* model) {
   model->node_parent.assign(nn, -2);
   model->node_parent_element.assign(nn, -1);
   model->node_parent_sign.assign(nn, 0);
+  model->node_depth.assign(nn, 0);
   model->node_order.clear();
   model->node_order.reserve(nn);
   std::deque<int> queue = {model->anchor_node};
@@ -35,6 +36,7 @@ void BuildNodeTree(RodModel* model) {
       model->node_parent[other] = n;
       model->node_parent_element[other] = j;
       model->node_parent_sign[other] = en[1] == other ? 1 : -1;
+      model->node_depth[other] = model->node_depth[n] + 1;
       queue.push_back(other);
     }
   }
@@ -102,6 +104,69 @@ bool Compliant(const RodModel& model, int k) {
   return !rigid;
 }
 
+// Number of elements on the tree path between nodes a and b.
+int PathElements(const RodModel& model, int a, int b) {
+  int count = 0;
+  model.ForEachPathElementFrom(b, a, [&](int, int) { ++count; });
+  return count;
+}
+
+// Nodes in depth-first preorder from the anchor (children by node index).
+std::vector<int> PreorderNodes(const RodModel& model) {
+  std::vector<std::vector<int>> children(model.num_nodes());
+  for (int n = 0; n < model.num_nodes(); ++n)
+    if (model.node_parent[n] >= 0) children[model.node_parent[n]].push_back(n);
+  std::vector<int> order, stack = {model.anchor_node};
+  order.reserve(model.num_nodes());
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    order.push_back(n);
+    for (auto it = children[n].rbegin(); it != children[n].rend(); ++it) stack.push_back(*it);
+  }
+  return order;
+}
+
+// The rows' basis (RodSupport::row_reference, row_chain; RodModel::row_support_order): each
+// support with rows measured from the fixed support met last before it in a depth-first walk
+// when that one is nearer than its reference. Every such row spans the cable up to where the
+// two branches part and down again, and over all supports each element lies on at most two of
+// them; measured from the nearest fixed support up the tree instead (the physics' reference),
+// every connector of a harness whose trunk is held nowhere else is measured from the anchor,
+// their rows all overlap along the trunk and the elimination grows with their number squared.
+void AssignRowBasis(RodModel* model, const std::vector<int>& fixed_at) {
+  const std::vector<int> preorder = PreorderNodes(*model);
+  std::vector<int> previous_fixed(model->num_nodes(), -1);
+  int last = -1;
+  for (int n : preorder) {
+    previous_fixed[n] = last;
+    if (fixed_at[n] >= 0 && n != model->anchor_node) last = fixed_at[n];
+  }
+  std::vector<std::vector<int>> at_node(model->num_nodes());
+  for (size_t k = 0; k < model->supports.size(); ++k)
+    at_node[model->supports[k].node].push_back(static_cast<int>(k));
+  model->row_support_order.clear();
+  for (int n : preorder)
+    for (int k : at_node[n]) {
+      RodSupport& sp = model->supports[k];
+      sp.row_reference = sp.reference;
+      sp.row_chain.clear();
+      if (sp.constraint_row < 0) continue;
+      model->row_support_order.push_back(k);
+      const int before = previous_fixed[n];
+      if (sp.contact || before < 0 || before == k || before == sp.reference) continue;
+      const int reference_node = sp.reference >= 0 ? model->supports[sp.reference].node : model->anchor_node;
+      if (PathElements(*model, n, model->supports[before].node) >= PathElements(*model, n, reference_node))
+        continue;
+      // `before` lies below `reference` (preorder), so its chain of references reaches it.
+      for (int m = before; m != sp.reference; m = model->supports[m].reference) {
+        CABLEFIT_CHECK(m >= 0, "row basis: a support's chain of references misses its own");
+        sp.row_chain.push_back(m);
+      }
+      sp.row_reference = before;
+    }
+}
+
 }  // namespace
 
 void AssignConstraintReferences(RodModel* model) {
@@ -160,6 +225,7 @@ void AssignConstraintReferences(RodModel* model) {
     });
     if (!rigid) sp.compliance = compliance;
   }
+  AssignRowBasis(model, fixed_at);
 }
 
 }  // namespace cablefit::internal

@@ -61,7 +61,12 @@ PivotFactor FactorLeading(const Eigen::Matrix3d& p, int size) {
 
 }  // namespace
 
-bool KktLdlt::SamePattern(const internal::SparseJacobian& jacobian) const {
+bool KktLdlt::SamePattern(const internal::SparseJacobian& jacobian,
+                          const ConstraintBasis& basis) const {
+  const std::vector<ConstraintBasis::Block>& coupling = basis.compliance_coupling();
+  if (coupling.size() != coupling_pattern_.size()) return false;
+  for (size_t i = 0; i < coupling.size(); ++i)
+    if (coupling_pattern_[i] != std::make_pair(coupling[i].a, coupling[i].b)) return false;
   if (static_cast<int>(jac_outer_.size()) != jacobian.outerSize() + 1) return false;
   int t = 0;
   for (int r = 0; r < jacobian.outerSize(); ++r) {
@@ -73,16 +78,19 @@ bool KktLdlt::SamePattern(const internal::SparseJacobian& jacobian) const {
 }
 
 void KktLdlt::Analyze(const RodModel& model, const internal::BlockTree& h,
-                      const internal::SparseJacobian& jacobian) {
+                      const internal::SparseJacobian& jacobian, const ConstraintBasis& basis) {
   const int ni = h.size();
   num_items_ = ni;
   num_rows_ = static_cast<int>(jacobian.rows());
   row_first_.clear();
   row_count_.clear();
   block_of_row_.assign(num_rows_, -1);
-  for (const RodSupport& sp : model.supports) {
+  block_of_support_.assign(model.supports.size(), -1);
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const RodSupport& sp = model.supports[k];
     if (sp.constraint_row < 0 || sp.constraint_rows == 0) continue;
     const int b = ni + static_cast<int>(row_first_.size());
+    block_of_support_[k] = b;
     row_first_.push_back(sp.constraint_row);
     row_count_.push_back(sp.constraint_rows);
     for (int r = 0; r < sp.constraint_rows; ++r) block_of_row_[sp.constraint_row + r] = b;
@@ -140,6 +148,18 @@ void KktLdlt::Analyze(const RodModel& model, const internal::BlockTree& h,
     if (h.Parent(i) >= 0) column[i].push_back(h.Parent(i));
   for (int b = 0; b < nr; ++b)
     for (int i : row_items[b]) column[i].push_back(ni + b);
+  // Compliance between two supports' rows: an entry in the column of the one eliminated first.
+  coupling_pattern_.clear();
+  for (const ConstraintBasis::Block& c : basis.compliance_coupling()) {
+    coupling_pattern_.emplace_back(c.a, c.b);
+    const int u = block_of_support_[static_cast<size_t>(c.a)], v = block_of_support_[static_cast<size_t>(c.b)];
+    CABLEFIT_CHECK(u >= 0 && v >= 0, "compliance between supports without rows");
+    if (position[u] < position[v]) {
+      column[u].push_back(v);
+    } else {
+      column[v].push_back(u);
+    }
+  }
   auto by_position = [&position](int a, int b) { return position[a] < position[b]; };
   column_start_.assign(nb + 1, 0);
   std::vector<int> column_begin(nb), column_end(nb);
@@ -185,15 +205,24 @@ void KktLdlt::Analyze(const RodModel& model, const internal::BlockTree& h,
   for (int r = 0; r < num_rows_; ++r)
     for (internal::SparseJacobian::InnerIterator it(jacobian, r); it; ++it)
       jac_entry_.push_back(entry_index(static_cast<int>(it.col()) / 3, block_of_row_[r]));
+  coupling_entry_.clear();
+  coupling_flip_.clear();
+  for (const auto& [a, b] : coupling_pattern_) {
+    const int u = block_of_support_[static_cast<size_t>(a)], v = block_of_support_[static_cast<size_t>(b)];
+    const bool u_first = position[u] < position[v];
+    coupling_entry_.push_back(u_first ? entry_index(u, v) : entry_index(v, u));
+    coupling_flip_.push_back(u_first ? 1 : 0);
+  }
   entry_.assign(entry_block_.size(), Eigen::Matrix3d::Zero());
   pivot_.assign(nb, Eigen::Matrix3d::Zero());
 }
 
 KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const internal::BlockTree& h,
                                    const internal::SparseJacobian& jacobian,
-                                   const std::vector<char>& free, double shift) {
-  if (num_items_ != h.size() || num_rows_ != jacobian.rows() || !SamePattern(jacobian))
-    Analyze(model, h, jacobian);
+                                   const ConstraintBasis& basis, const std::vector<char>& free,
+                                   double shift) {
+  if (num_items_ != h.size() || num_rows_ != jacobian.rows() || !SamePattern(jacobian, basis))
+    Analyze(model, h, jacobian, basis);
   const int ni = num_items_;
   const int nb = static_cast<int>(order_.size());
   double scale = std::abs(shift);
@@ -210,15 +239,20 @@ KktLdlt::Status KktLdlt::Factorize(const RodModel& model, const internal::BlockT
                                 0.0);  // |J_k|^2 / |H|: its pivot's size
   for (int b = ni; b < nb; ++b)
     pivot_[b].topLeftCorner(row_count_[b - ni], row_count_[b - ni]).setZero();
-  // A compliant support (an extensible stretch) holds c = C lambda: -C on its rows' diagonal.
-  for (const RodSupport& sp : model.supports) {
-    if (sp.constraint_row < 0 || sp.compliance <= 0) continue;
-    for (int r = sp.constraint_row; r < sp.constraint_row + sp.constraint_rows; ++r) {
-      const int b = block_of_row_[r] - ni;
-      pivot_[ni + b](r - row_first_[b], r - row_first_[b]) -= sp.compliance;
-    }
+  // A compliant support (an extensible stretch) holds c = C lambda: -C in its rows' blocks.
+  for (size_t k = 0; k < model.supports.size(); ++k) {
+    const int b = block_of_support_[k];
+    if (b < 0) continue;
+    const int rows = row_count_[b - ni];
+    pivot_[b].topLeftCorner(rows, rows) -= basis.compliance_diagonal()[k].topLeftCorner(rows, rows);
   }
   for (Eigen::Matrix3d& e : entry_) e.setZero();
+  const std::vector<ConstraintBasis::Block>& coupling = basis.compliance_coupling();
+  for (size_t c = 0; c < coupling.size(); ++c) {
+    // The entry holds A(later block, earlier block): rows of the later one.
+    entry_[coupling_entry_[c]] = coupling_flip_[c] ? Eigen::Matrix3d(-coupling[c].value.transpose())
+                                                   : Eigen::Matrix3d(-coupling[c].value);
+  }
   for (int i = 0; i < ni; ++i)
     if (h_entry_[i] >= 0) entry_[h_entry_[i]] = h.Coupling(i).transpose();
   int t = 0;

@@ -1,8 +1,10 @@
 // Exact block LDL^T of the Newton system of a rod or rod network,
 //   [H + shift I   J^T] [step  ]     [g]
 //   [J             -C ] [lambda] = - [c],
-// C the diagonal of the supports' axial compliances (RodSupport::compliance, 0
-// for an inextensible cable),
+// in the rows' basis (constraint_basis.h): C the supports' axial compliances
+// (RodSupport::compliance, 0 for an inextensible cable) carried into that
+// basis, block diagonal with a few blocks between supports whose rows share a
+// stretch,
 // in O(n) however many supports hold the cable. H is a block tree (one 3x3
 // block per frame sample, rod_model.h); the rows of support k act only on the
 // frames of its stretch, the cable between it and its reference support
@@ -27,6 +29,7 @@
 #include "cablefit/core/rod/internal/block_tree.h"
 #include "cablefit/core/rod/rod_model.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
+#include "constraint_basis.h"
 
 namespace cablefit {
 
@@ -44,13 +47,14 @@ class KktLdlt {
   };
 
   /// Factorises the system at `h` (masked: held rotations are identity rows)
-  /// and `jacobian` (rows of model.supports, masked columns pruned); `shift` [N
-  /// m] is added to the free rotations' diagonal. The structure is analysed
-  /// again only when the Jacobian's pattern changes, so one object serves every
+  /// and `jacobian` (rows of model.supports in the rows' basis, masked columns
+  /// pruned), with the compliance `basis` gives; `shift` [N m] is added to the
+  /// free rotations' diagonal. The structure is analysed again only when the
+  /// Jacobian's or the compliance's pattern changes, so one object serves every
   /// Newton iteration of a model.
   Status Factorize(const RodModel& model, const internal::BlockTree& h,
-                   const internal::SparseJacobian& jacobian, const std::vector<char>& free,
-                   double shift);
+                   const internal::SparseJacobian& jacobian, const ConstraintBasis& basis,
+                   const std::vector<char>& free, double shift);
 
   /// Negative pivot eigenvalues of the last factorisation: rows + the unstable
   /// directions on the constraint manifold.
@@ -63,8 +67,8 @@ class KktLdlt {
 
  private:
   void Analyze(const RodModel& model, const internal::BlockTree& h,
-               const internal::SparseJacobian& jacobian);
-  bool SamePattern(const internal::SparseJacobian& jacobian) const;
+               const internal::SparseJacobian& jacobian, const ConstraintBasis& basis);
+  bool SamePattern(const internal::SparseJacobian& jacobian, const ConstraintBasis& basis) const;
 
   // Blocks: items 0 .. ni-1 (3 unknowns each), then one per support with rows
   // (1-3 unknowns, padded to 3 with unit pivots that nothing couples to, so
@@ -92,6 +96,10 @@ class KktLdlt {
   std::vector<int> jac_entry_;          // per Jacobian non-zero: the entry of (row block, item)
   std::vector<int> jac_outer_;          // the pattern analysed for
   std::vector<int> jac_inner_;
+  std::vector<int> block_of_support_;  // per support: its row block (index from num_items_), or -1
+  std::vector<std::pair<int, int>> coupling_pattern_;  // the compliance blocks analysed for
+  std::vector<int> coupling_entry_;    // per coupling block: its entry (later block, earlier one)
+  std::vector<char> coupling_flip_;    // 1: the entry holds block (b, a), stored transposed
   int negative_ = 0;
 };
 

@@ -13,6 +13,7 @@
 #include "cablefit/core/rod/internal/block_tree.h"
 #include "cablefit/core/base/cancellation.h"
 #include "cablefit/core/base/errors.h"
+#include "constraint_basis.h"
 #include "kkt_ldlt.h"
 #include "cablefit/core/base/internal/quaternion.h"
 #include "cablefit/core/rod/internal/rod_energy.h"
@@ -102,8 +103,8 @@ constexpr int kPseudoTransientIterationFactor = 60;
 struct Evaluation {
   double energy = 0.0;
   Eigen::VectorXd gradient;  // energy gradient (no constraint term), masked entries zeroed
-  Eigen::VectorXd c;
-  internal::SparseJacobian jac;
+  Eigen::VectorXd c;            // in the rows' basis (constraint_basis.h)
+  internal::SparseJacobian jac;  // in the rows' basis
   internal::BlockTree hessian;
 };
 
@@ -166,10 +167,11 @@ double PenaltyTerms(const Eigen::VectorXd& c, const Eigen::VectorXd& compliance,
 }
 
 double Merit(const RodModel& model, const RodState& state, double nu,
-             const std::vector<char>& free, const Eigen::VectorXd& compliance) {
+             const std::vector<char>& free, const Eigen::VectorXd& compliance,
+             const ConstraintBasis& basis) {
   Evaluation ev;
   Evaluate(model, state, false, nullptr, free, &ev, /*with_jacobian=*/false);
-  return ev.energy + PenaltyTerms(ev.c, compliance, nu);
+  return ev.energy + PenaltyTerms(basis.ToPhysical(ev.c), compliance, nu);
 }
 
 // Replaces masked rows/columns by the identity so the tree keeps one uniform block structure.
@@ -209,7 +211,8 @@ struct KktSolve {
   bool factored = false;        // by the KktLdlt, which can then solve other right-hand sides
   int negative_directions = 0;  // of the reduced Hessian (unstable directions on the manifold)
   Eigen::VectorXd step;         // 3n
-  Eigen::VectorXd lambda;       // m
+  Eigen::VectorXd lambda;       // m, in the rows' basis
+  Eigen::VectorXd physical_lambda;  // m, the physical multipliers (-reactions)
 };
 
 // The same system through the Schur complement S = C H^-1 C^T (O(n m) + O(m^3)): its inertia
@@ -217,7 +220,7 @@ struct KktSolve {
 // support rows. Used only when KktLdlt reports them.
 KktSolve SolveKktBySchurComplement(const internal::BlockTree& h_masked, const Evaluation& ev,
                                    const std::vector<char>& free, double mu,
-                                   const Eigen::VectorXd& compliance) {
+                                   const ConstraintBasis& basis) {
   KktSolve out;
   internal::BlockTree h = h_masked;
   if (mu != 0.0) ShiftFree(free, mu, &h);
@@ -233,7 +236,7 @@ KktSolve SolveKktBySchurComplement(const internal::BlockTree& h_masked, const Ev
   if (m > 0) {
     Eigen::MatrixXd s = ev.jac * rhs.rightCols(m);
     s = (0.5 * (s + s.transpose())).eval();
-    if (compliance.size() == m) s.diagonal() += compliance;
+    s += basis.DenseCompliance();
     const Eigen::VectorXd r = ev.c - ev.jac * rhs.col(0);
     // S = C H^-1 C^T by LDL^T (O(m^3/3)); its pivots' signs give its inertia (Sylvester).
     Eigen::LDLT<Eigen::MatrixXd> ldlt_s(s);
@@ -276,20 +279,23 @@ KktSolve SolveKktBySchurComplement(const internal::BlockTree& h_masked, const Ev
 
 // The Newton system by the O(n) block elimination of the whole KKT matrix (kkt_ldlt.h).
 KktSolve SolveKkt(KktLdlt* kkt, const RodModel& model, const internal::BlockTree& h_masked,
-                  const Evaluation& ev, const std::vector<char>& free, double mu) {
-  switch (kkt->Factorize(model, h_masked, ev.jac, free, mu)) {
+                  const Evaluation& ev, const std::vector<char>& free, double mu,
+                  const ConstraintBasis& basis) {
+  KktSolve out;
+  switch (kkt->Factorize(model, h_masked, ev.jac, basis, free, mu)) {
     case KktLdlt::Status::kSingularPivot:
       return KktSolve{};
     case KktLdlt::Status::kRankDeficient:
-      return SolveKktBySchurComplement(h_masked, ev, free, mu, RowCompliance(model));
+      out = SolveKktBySchurComplement(h_masked, ev, free, mu, basis);
+      break;
     case KktLdlt::Status::kOk:
+      kkt->Solve(ev.gradient, ev.c, &out.step, &out.lambda);
+      out.negative_directions = kkt->NegativeCount() - static_cast<int>(ev.c.size());
+      out.ok = true;
+      out.factored = true;
       break;
   }
-  KktSolve out;
-  kkt->Solve(ev.gradient, ev.c, &out.step, &out.lambda);
-  out.negative_directions = kkt->NegativeCount() - static_cast<int>(ev.c.size());
-  out.ok = true;
-  out.factored = true;
+  if (out.ok) out.physical_lambda = basis.MultipliersToPhysical(out.lambda);
   return out;
 }
 
@@ -394,7 +400,7 @@ bool RejectInvalidOptions(const StaticsOptions& options, StaticsSummary* sum) {
 bool SecondOrderCorrection(const RodModel& model, const KktLdlt& kkt_ldlt, const Evaluation& ev,
                            const Eigen::VectorXd& step, const Eigen::VectorXd& c_trial, double nu,
                            const std::vector<char>& free, const Eigen::VectorXd& compliance,
-                           double phi_wanted, RodState* state) {
+                           const ConstraintBasis& basis, double phi_wanted, RodState* state) {
   const Eigen::VectorXd error = c_trial - (ev.c + ev.jac * step);
   Eigen::VectorXd correction, unused;
   kkt_ldlt.Solve(Eigen::VectorXd::Zero(ev.gradient.size()), error, &correction, &unused);
@@ -402,14 +408,14 @@ bool SecondOrderCorrection(const RodModel& model, const KktLdlt& kkt_ldlt, const
   for (int k = 0; k < correction.size(); ++k)
     if (!free[k]) correction[k] = 0.0;
   ApplyStep(model, correction, 1.0, state);
-  return Merit(model, *state, nu, free, compliance) <= phi_wanted;
+  return Merit(model, *state, nu, free, compliance, basis) <= phi_wanted;
 }
 
 // The stability verdict from `ev`, evaluated (with its Hessian) at the state in question.
 void StabilityAt(const RodModel& model, const std::vector<char>& free, Evaluation* ev,
-                 KktLdlt* kkt_ldlt, StaticsSummary* summary) {
+                 const ConstraintBasis& basis, KktLdlt* kkt_ldlt, StaticsSummary* summary) {
   MaskHessian(free, &ev->hessian);  // idempotent: it may have been masked for a step already
-  const KktSolve kkt = SolveKkt(kkt_ldlt, model, ev->hessian, *ev, free, 0.0);
+  const KktSolve kkt = SolveKkt(kkt_ldlt, model, ev->hessian, *ev, free, 0.0, basis);
   summary->stable = kkt.ok && kkt.negative_directions == 0;
   summary->negative_directions = kkt.ok ? kkt.negative_directions : -1;
 }
@@ -439,20 +445,25 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
   double best_constraint = std::numeric_limits<double>::infinity();
   int best_constraint_iter = 0;
   const bool pseudo_transient = pseudo_time_shift > 0;
+  // The rows' basis (constraint_basis.h) depends on the supports' frames only, which stay put
+  // during a solve (ApplySupportTargets above).
+  const ConstraintBasis basis(model, *state);
   for (int iter = 0;; ++iter) {
     CheckCancelled();  // a batch item's --timeout
-    Evaluate(model, *state, true, &state->lambda, free, &ev);
+    const Eigen::VectorXd lambda_rows = basis.MultipliersToRows(state->lambda);
+    Evaluate(model, *state, true, &lambda_rows, free, &ev);
     if (first) {
       sum.initial_energy = ev.energy;
       first = false;
     }
+    const Eigen::VectorXd c_phys = basis.ToPhysical(ev.c);
     const Eigen::VectorXd grad_l =
         model.num_constraints > 0
-            ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * state->lambda)
+            ? Eigen::VectorXd(ev.gradient + ev.jac.transpose() * lambda_rows)
             : ev.gradient;
     sum.gradient_norm = grad_l.lpNorm<Eigen::Infinity>();
     sum.constraint_norm =
-        ev.c.size() ? ConstraintResidual(ev.c, compliance, state->lambda).lpNorm<Eigen::Infinity>()
+        ev.c.size() ? ConstraintResidual(c_phys, compliance, state->lambda).lpNorm<Eigen::Infinity>()
                     : 0.0;
     sum.final_energy = ev.energy;
     sum.iterations = iter;
@@ -487,7 +498,7 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
     // shift that helps: the loop would never reach its bound, so it fails at once.
     for (double mu = pseudo_time_shift * scale; std::isfinite(scale);) {
       CheckCancelled();
-      kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu);
+      kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu, basis);
       if (kkt.ok && kkt.negative_directions == 0) break;
       mu = mu == 0.0 ? kFirstHessianShift * scale : kHessianShiftGrowth * mu;
       if (mu > kMaxHessianShift * scale) {
@@ -512,21 +523,22 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
       sum.message = "step below round-off";
       break;
     }
-    nu = std::max(nu, kPenaltyMargin *
-                              (kkt.lambda.size() ? kkt.lambda.lpNorm<Eigen::Infinity>() : 0.0) +
+    nu = std::max(nu, kPenaltyMargin * (kkt.physical_lambda.size()
+                                            ? kkt.physical_lambda.lpNorm<Eigen::Infinity>()
+                                            : 0.0) +
                           kPenaltyFloor * model.force_scale);
     double rigid_c1 = 0.0, compliant_slope = 0.0;
     if (ev.c.size()) {
-      const Eigen::VectorXd jac_step = ev.jac * step;
+      const Eigen::VectorXd jac_step = basis.ToPhysical(ev.jac * step);
       for (Eigen::Index i = 0; i < ev.c.size(); ++i) {
         if (compliance[i] > 0) {
-          compliant_slope += ev.c[i] / compliance[i] * jac_step[i];
+          compliant_slope += c_phys[i] / compliance[i] * jac_step[i];
         } else {
-          rigid_c1 += std::abs(ev.c[i]);
+          rigid_c1 += std::abs(c_phys[i]);
         }
       }
     }
-    const double phi0 = ev.energy + PenaltyTerms(ev.c, compliance, nu);
+    const double phi0 = ev.energy + PenaltyTerms(c_phys, compliance, nu);
     const double slope = ev.gradient.dot(step) + compliant_slope - nu * rigid_c1;
     const RodState start = *state;
     double alpha = 1.0;
@@ -534,7 +546,7 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
     for (int ls = 0; ls < kMaxBacktracks; ++ls, alpha *= 0.5) {
       *state = start;
       ApplyStep(model, step, alpha, state);
-      const double phi = Merit(model, *state, nu, free, compliance);
+      const double phi = Merit(model, *state, nu, free, compliance, basis);
       if (phi <= phi0 + kArmijoDecrease * alpha * std::min(slope, 0.0) +
                      kMeritRoundOff * std::abs(phi0)) {
         accepted = true;
@@ -551,16 +563,17 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
                 : trial.gradient;
         const double kkt1 = std::max(
             gl.lpNorm<Eigen::Infinity>() / gtol,
-            (trial.c.size()
-                 ? ConstraintResidual(trial.c, compliance, kkt.lambda).lpNorm<Eigen::Infinity>()
-                 : 0.0) /
+            (trial.c.size() ? ConstraintResidual(basis.ToPhysical(trial.c), compliance,
+                                                 kkt.physical_lambda)
+                                  .lpNorm<Eigen::Infinity>()
+                            : 0.0) /
                 ctol);
         if (kkt1 < kMaratosResidualReduction * kkt0) {
           accepted = true;
           break;
         }
         if (kkt.factored && trial.c.size() &&
-            SecondOrderCorrection(model, kkt_ldlt, ev, step, trial.c, nu, free, compliance,
+            SecondOrderCorrection(model, kkt_ldlt, ev, step, trial.c, nu, free, compliance, basis,
                                   phi0 + kArmijoDecrease * std::min(slope, 0.0), state)) {
           ++sum.second_order_corrections;
           accepted = true;
@@ -591,12 +604,12 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
       sum.message = "no step decreased the merit function";
       break;
     }
-    state->lambda = kkt.lambda;
+    state->lambda = kkt.physical_lambda;
   }
   // Every way to convergence leaves `ev` evaluated at the final state (the same call as
   // EvaluateStability's) and `kkt_ldlt` analysed for its pattern: the verdict costs one
   // factorisation, not a second evaluation and analysis (a fifth of a warm-started solve).
-  if (sum.converged()) StabilityAt(model, free, &ev, &kkt_ldlt, &sum);
+  if (sum.converged()) StabilityAt(model, free, &ev, basis, &kkt_ldlt, &sum);
   sum.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return sum;
 }
@@ -618,10 +631,12 @@ StaticsSummary SolveStaticsDirect(const RodModel& model, RodState* state,
 
 void EvaluateStability(const RodModel& model, const RodState& state, StaticsSummary* summary) {
   const std::vector<char> free = FreeMask(model);
+  const ConstraintBasis basis(model, state);
+  const Eigen::VectorXd lambda_rows = basis.MultipliersToRows(state.lambda);
   Evaluation ev;
-  Evaluate(model, state, true, &state.lambda, free, &ev);
+  Evaluate(model, state, true, &lambda_rows, free, &ev);
   KktLdlt kkt_ldlt;
-  StabilityAt(model, free, &ev, &kkt_ldlt, summary);
+  StabilityAt(model, free, &ev, basis, &kkt_ldlt, summary);
 }
 
 namespace {

@@ -1,14 +1,17 @@
 // The O(n) block elimination of the Newton system (core/solver/src/kkt_ldlt.h) against
 // a dense solve of the same KKT matrix: step, multipliers and inertia, for a
 // single rod held by every kind of support, for a rod network with a breakout,
-// off equilibrium (indefinite Hessian) and with a shift; and its refusal of
-// rank-deficient rows (a taut straight stretch).
+// off equilibrium (indefinite Hessian) and with a shift; for a harness of
+// extensible branches whose rows are eliminated in another basis than the
+// physical one (constraint_basis.h) against the dense physical system; and its
+// refusal of rank-deficient rows (a taut straight stretch).
 #include "kkt_ldlt.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <memory>
 #include <random>
 
 #include "cablefit/core/rod/initial_shape.h"
@@ -32,7 +35,8 @@ struct System {
   internal::SparseJacobian jac;
   std::vector<char> free;
   Eigen::VectorXd g, c;
-  Eigen::MatrixXd dense_h, dense_j;
+  Eigen::MatrixXd dense_h, dense_j, dense_c;  // dense_c: the rows' compliance
+  std::shared_ptr<ConstraintBasis> basis;
 };
 
 System MaskedSystem(const RodModel& model, const RodState& state, const Eigen::VectorXd& lambda) {
@@ -55,6 +59,8 @@ System MaskedSystem(const RodModel& model, const RodState& state, const Eigen::V
     s.g[k] = 0.0;
   }
   s.c = e.constraints;
+  s.basis = std::make_shared<ConstraintBasis>(model, state);
+  s.dense_c = s.basis->DenseCompliance();
   s.h.ResizeTree(model.item_parent, model.item_order);
   for (int i = 0; i < n; ++i) {
     s.h.Diag(i) = s.dense_h.block<3, 3>(3 * i, 3 * i);
@@ -78,6 +84,7 @@ DenseAnswer SolveDense(const System& s, double shift) {
     if (s.free[i]) k(i, i) += shift;
   k.topRightCorner(n3, m) = s.dense_j.transpose();
   k.bottomLeftCorner(m, n3) = s.dense_j;
+  k.bottomRightCorner(m, m) = -s.dense_c;
   Eigen::VectorXd rhs(n3 + m);
   rhs << -s.g, -s.c;
   const Eigen::VectorXd x = k.fullPivLu().solve(rhs);
@@ -93,7 +100,7 @@ DenseAnswer SolveDense(const System& s, double shift) {
 // the m rows).
 int ExpectSameSolution(const RodModel& model, const System& s, double shift) {
   KktLdlt kkt;
-  EXPECT_EQ(kkt.Factorize(model, s.h, s.jac, s.free, shift), KktLdlt::Status::kOk);
+  EXPECT_EQ(kkt.Factorize(model, s.h, s.jac, *s.basis, s.free, shift), KktLdlt::Status::kOk);
   Eigen::VectorXd step, lambda;
   kkt.Solve(s.g, s.c, &step, &lambda);
   const DenseAnswer d = SolveDense(s, shift);
@@ -184,7 +191,7 @@ TEST(KktLdlt, SingleRodWithEveryKindOfSupportMatchesTheDenseSolve) {
   ExpectSameAnswer(model, at_rest, 0.0, /*own_rhs=*/false);
   {
     KktLdlt kkt;
-    ASSERT_EQ(kkt.Factorize(model, at_rest.h, at_rest.jac, at_rest.free, 0.0),
+    ASSERT_EQ(kkt.Factorize(model, at_rest.h, at_rest.jac, *at_rest.basis, at_rest.free, 0.0),
               KktLdlt::Status::kOk);
     EXPECT_EQ(kkt.NegativeCount(), model.num_constraints);
   }
@@ -221,6 +228,83 @@ TEST(KktLdlt, NetworkWithABreakoutAndClipsMatchesTheDenseSolve) {
       << "the perturbed states should include indefinite ones";
 }
 
+// A trunk with branches ending in clamped connectors and no support of its own, every branch
+// extensible (EA): the connectors' rows are eliminated measured from each other (the rows'
+// basis), their physics measured up the tree. The elimination in that basis with its compliance
+// T C T^T gives the step and, carried back, the multipliers of the dense physical system.
+TEST(KktLdlt, RowsInAnotherBasisGiveThePhysicalSystemsSolution) {
+  NetworkSpec spec;
+  const int legs = 5;
+  Vec3 previous(0, 0, 0);
+  for (int k = 0; k <= legs; ++k) {
+    const Vec3 next(0.15 * (k + 1), 0.01 * k, 0.0);
+    BranchSpec trunk;
+    trunk.name = "trunk" + std::to_string(k);
+    trunk.length = (next - previous).norm() * 1.02;
+    trunk.material = testing::TestMaterial(0.03, 0.1);
+    trunk.material.axial_stiffness = 2e3;
+    trunk.route = testing::StraightRoute(previous, next);
+    if (k == 0) trunk.supports.push_back(testing::Clamp(0.0, previous, next - previous));
+    if (k == legs) trunk.supports.push_back(testing::Clamp(trunk.length, next, next - previous));
+    if (k > 0) trunk.start_junction = k - 1;
+    if (k < legs) {
+      trunk.end_junction = k;
+      spec.junctions.push_back({"j" + std::to_string(k), 0.0, 0.0});
+    }
+    spec.branches.push_back(trunk);
+    if (k < legs) {
+      const Vec3 leaf = next + Vec3(0.02, 0.2 * (k % 2 ? 1 : -1), -0.05);
+      BranchSpec leg;
+      leg.name = "leg" + std::to_string(k);
+      leg.length = (leaf - next).norm() * 1.03;
+      leg.material = testing::TestMaterial(0.02, 0.08);
+      leg.material.axial_stiffness = 1e3;
+      leg.route = testing::StraightRoute(next, leaf);
+      leg.start_junction = k;
+      leg.supports.push_back(testing::Clamp(leg.length, leaf, leaf - next));
+      spec.branches.push_back(leg);
+    }
+    previous = next;
+  }
+  const NetworkModel net = CompileNetworkModel(spec, 0.02);
+  const RodModel& model = net.rod;
+  bool another_basis = false;
+  for (const RodSupport& sp : model.supports) another_basis = another_basis || !sp.row_chain.empty();
+  ASSERT_TRUE(another_basis) << "the connectors should be measured from each other";
+  RodState state = DrawnNetworkState(net);
+  Eigen::VectorXd lambda;
+  Perturb(model, 0.1, 9u, &state, &lambda);
+  const System s = MaskedSystem(model, state, lambda);
+  ASSERT_FALSE(s.basis->identity());
+  ASSERT_FALSE(s.basis->compliance_coupling().empty());
+  for (double shift : {0.0, 1.0}) {
+    KktLdlt kkt;
+    ASSERT_EQ(kkt.Factorize(model, s.h, s.jac, *s.basis, s.free, shift), KktLdlt::Status::kOk);
+    Eigen::VectorXd step, lambda_rows;
+    kkt.Solve(s.g, s.c, &step, &lambda_rows);
+    // The physical system: rows and Jacobian carried back by T^-1, the diagonal compliance.
+    const int m = model.num_constraints;
+    Eigen::MatrixXd j_phys(m, s.dense_j.cols());
+    for (int col = 0; col < s.dense_j.cols(); ++col)
+      j_phys.col(col) = s.basis->ToPhysical(s.dense_j.col(col));
+    Eigen::VectorXd c_diag = Eigen::VectorXd::Zero(m);
+    for (const RodSupport& sp : model.supports)
+      if (sp.constraint_row >= 0) c_diag.segment(sp.constraint_row, sp.constraint_rows).setConstant(sp.compliance);
+    EXPECT_GT(c_diag.maxCoeff(), 0.0);
+    System phys = s;
+    phys.dense_j = j_phys;
+    phys.c = s.basis->ToPhysical(s.c);
+    phys.dense_c = c_diag.asDiagonal();
+    const DenseAnswer d = SolveDense(phys, shift);
+    EXPECT_LT((step - d.step).norm(), 1e-8 * d.step.norm()) << shift;
+    EXPECT_LT((s.basis->MultipliersToPhysical(lambda_rows) - d.lambda).norm(), 1e-8 * d.lambda.norm())
+        << shift;
+    EXPECT_EQ(kkt.NegativeCount(), d.negative) << shift;
+    // And back: the rows' multipliers from the physical ones.
+    EXPECT_LT((s.basis->MultipliersToRows(d.lambda) - lambda_rows).norm(), 1e-8 * lambda_rows.norm());
+  }
+}
+
 TEST(KktLdlt, TautStraightStretchIsReportedRankDeficient) {
   // Clamped at both ends exactly its length apart, drawn straight: the distance
   // between the clamps cannot change to first order, so that row of J is zero.
@@ -236,7 +320,7 @@ TEST(KktLdlt, TautStraightStretchIsReportedRankDeficient) {
   RodState state = MakeInitialState(model, DefaultInitialCurve(r));
   const System s = MaskedSystem(model, state, Eigen::VectorXd::Zero(model.num_constraints));
   KktLdlt kkt;
-  EXPECT_EQ(kkt.Factorize(model, s.h, s.jac, s.free, 0.0), KktLdlt::Status::kRankDeficient);
+  EXPECT_EQ(kkt.Factorize(model, s.h, s.jac, *s.basis, s.free, 0.0), KktLdlt::Status::kRankDeficient);
   // The solver still gives its verdict (the Schur complement regularises that
   // row).
   StaticsSummary sum = SolveStatics(model, &state, StaticsOptions{});

@@ -21,6 +21,12 @@ Polyline ReparameteriseToLength(const Polyline& curve, double length);
 /// Point of an arc-length-parameterised polyline at s (linear between samples).
 Vec3 PointAt(const Polyline& curve, double s);
 
+/// The point at arc length `s` [m] of the C1 cubic through the curve's samples (Hermite, with
+/// tangents from the neighbouring samples), straight beyond the ends as PointAt. For a finer
+/// discretisation started from a coarser shape: chords of the polyline itself kink at every
+/// coarse sample, and the bending energy of those kinks grows as the elements shrink.
+Vec3 SmoothPointAt(const Polyline& curve, double s);
+
 /// A state whose elements follow `curve` (chord directions), twisted by parallel transport from
 /// the first frame support with the twist mismatch at each following clamp spread linearly.
 /// The state's support targets are the poses the shape itself has (continuation start).

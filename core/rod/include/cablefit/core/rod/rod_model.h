@@ -77,6 +77,16 @@ struct RodSupport {
   /// and its reference support: its position rows then hold c = compliance * lambda instead of
   /// c = 0 (the stretch lengthens under tension). 0 = rigid (inextensible cable, contacts).
   double compliance = 0.0;
+  /// The support the Newton system measures this support's rows from (the rows' basis): a
+  /// support met just before it in a depth-first walk of the tree, when that one is nearer than
+  /// `reference`, else `reference` itself. Its rows then span only the cable between the two,
+  /// and every element lies on few of them, so the elimination of a harness with hundreds of
+  /// connectors stays O(n). The physics (reactions, stretches) stays that of `reference`: the
+  /// rows in this basis are c_k - P_k sum_{m in row_chain} c_m of the rows measured from
+  /// `reference` (row_chain: the supports from row_reference up that chain of references to
+  /// `reference`, each holding its full position), a change of basis the solver undoes.
+  int row_reference = -1;
+  std::vector<int> row_chain;
 };
 
 struct RodModel {
@@ -91,6 +101,9 @@ struct RodModel {
   std::vector<RodEdge> edges;
   std::vector<RodSupport> supports;
   int anchor_support = 0;  // the position support whose node is fixed by construction
+  /// Supports with rows, each after every support of its row_chain (depth-first preorder of
+  /// their nodes): the order the rows' change of basis is applied in.
+  std::vector<int> row_support_order;
   int anchor_node = 0;
   int num_constraints = 0;  // position-constraint rows
   // Topology. element_nodes[j] = (from, to): r_to = r_from + h_j d3_j. Nodes form a tree rooted
@@ -103,6 +116,7 @@ struct RodModel {
   std::vector<int> node_parent_element;
   std::vector<int> node_parent_sign;
   std::vector<int> node_order;
+  std::vector<int> node_depth;  // elements between a node and the anchor
   std::vector<int> item_parent;
   std::vector<int> item_parent_edge;  // the edge joining an item to its parent, -1 at a root
   std::vector<int> item_order;
@@ -122,11 +136,24 @@ struct RodModel {
     for (int n = node; node_parent[n] >= 0; n = node_parent[n])
       f(node_parent_element[n], node_parent_sign[n]);
   }
-  /// The same from `ancestor` (a node on the anchor's path to `node`, or -1 for the anchor).
+  /// The same from node `from` (-1 for the anchor) to `node`: r_node = r_from + sum sign *
+  /// h_element * d3_element over the tree path between them, up from `node` to their lowest
+  /// common ancestor, then up from `from` (its signs turned). From an ancestor: only the first.
   template <class F>
-  void ForEachPathElementFrom(int ancestor, int node, F&& f) const {
-    for (int n = node; node_parent[n] >= 0 && n != ancestor; n = node_parent[n])
-      f(node_parent_element[n], node_parent_sign[n]);
+  void ForEachPathElementFrom(int from, int node, F&& f) const {
+    int a = node, b = from;
+    if (b < 0) {
+      for (; node_parent[a] >= 0; a = node_parent[a]) f(node_parent_element[a], node_parent_sign[a]);
+      return;
+    }
+    for (; node_depth[a] > node_depth[b]; a = node_parent[a])
+      f(node_parent_element[a], node_parent_sign[a]);
+    for (; node_depth[b] > node_depth[a]; b = node_parent[b])
+      f(node_parent_element[b], -node_parent_sign[b]);
+    for (; a != b; a = node_parent[a], b = node_parent[b]) {
+      f(node_parent_element[a], node_parent_sign[a]);
+      f(node_parent_element[b], -node_parent_sign[b]);
+    }
   }
 };
 

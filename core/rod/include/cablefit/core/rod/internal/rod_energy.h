@@ -52,15 +52,19 @@ void AddLinearTangentTerm(const Eigen::Vector4d& q, const Vec3& a, int item, Ene
 /// num_constraints x 3 items [m], row-major: each row is non-zero along one tree path.
 using SparseJacobian = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-/// Position constraints c (num_constraints) and their Jacobian.
+/// Position constraints c (num_constraints) and their Jacobian, in the rows' basis (each
+/// support's rows measured from its row_reference; internal/constraint_basis.h turns them into
+/// the physical rows, measured from `reference`).
 void EvaluatePositionConstraints(const RodModel& model, const RodState& state, Eigen::VectorXd* c,
                                  SparseJacobian* jacobian);
 
-/// Force every support exerts on the cable through its constraint rows (world, [N]); the
-/// anchor's entry is only what other rows pass to it (its own follows from global balance).
+/// Force every support exerts on the cable through its constraint rows (world, [N]), from the
+/// physical multipliers (state.lambda, rows measured from `reference`); the anchor's entry is
+/// only what other rows pass to it (its own follows from global balance).
 std::vector<Vec3> SupportReactions(const RodModel& model, const RodState& state);
 
-/// Adds the curvature of lambda . c to the Hessian (no value, no gradient).
+/// Adds the curvature of lambda . c to the Hessian (no value, no gradient); lambda and c in the
+/// rows' basis.
 void AddConstraintCurvature(const RodModel& model, const RodState& state,
                             const Eigen::VectorXd& lambda, BlockTree* hessian);
 
