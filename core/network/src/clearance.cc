@@ -144,17 +144,17 @@ ClearanceHit TubeToTubeClearance(const Polyline& a, double ra, const TubeSkip& s
 
 TubeClearanceIndex::TubeClearanceIndex(std::vector<Tube> tubes) : tubes_(std::move(tubes)) {
   for (const Tube& t : tubes_) widest_ = std::max(widest_, t.radius);
+  // Runs of consecutive segments are the tree's primitives: a harness's relaxed cables have a
+  // million segments, and a tree over each of them cost more to walk than the pairs it spared.
   for (size_t t = 0; t < tubes_.size(); ++t) {
     const Polyline* c = tubes_[t].centreline;
-    if (c == nullptr) continue;
-    for (int i = 0; i + 1 < c->size(); ++i) {
-      Eigen::AlignedBox3d b(Vec3(c->points.col(i)));
-      b.extend(Vec3(c->points.col(i + 1)));
-      segments_.emplace_back(static_cast<int>(t), i);
-      boxes_.push_back(b);
+    if (c == nullptr || c->size() < 2) continue;
+    for (const Run& run : Runs(*c, c->s[0], c->s[c->size() - 1])) {
+      runs_.push_back({static_cast<int>(t), run.begin, run.end});
+      boxes_.push_back(run.box);
     }
   }
-  tree_ = BoxTree(boxes_, 8);
+  tree_ = BoxTree(boxes_, 4);
 }
 
 int TubeClearanceIndex::Nearest(int i, const PairSkip& skip, double* clearance) const {
@@ -172,27 +172,33 @@ int TubeClearanceIndex::Nearest(int i, const PairSkip& skip, double* clearance) 
             return box.exteriorDistance(run.box) - ra - widest_;
           },
           [&](int k, double best_so_far) {
-            const auto [j, seg] = segments_[static_cast<size_t>(k)];
+            const IndexedRun& other = runs_[static_cast<size_t>(k)];
+            const int j = other.tube;
             if (j == i) return best_so_far;
             const Polyline& b = *tubes_[static_cast<size_t>(j)].centreline;
             const TubeSkip sa = skip(i, j), sb = skip(j, i);
             const double a_from = a.s[0] + sa.start, a_to = a.s[a.size() - 1] - sa.end;
             const double b_from = b.s[0] + sb.start, b_to = b.s[b.size() - 1] - sb.end;
-            const double sb0 = b.s[seg], sb1 = b.s[seg + 1];
             const double rb = tubes_[static_cast<size_t>(j)].radius;
-            for (int s = run.begin; s < run.end; ++s) {
-              double u = 0, v = 0;
-              ClosestSegmentParameters(a.points.col(s), a.points.col(s + 1), b.points.col(seg),
-                                       b.points.col(seg + 1), &u, &v);
-              const double s_a = a.s[s] + u * (a.s[s + 1] - a.s[s]);
-              const double s_b = sb0 + v * (sb1 - sb0);
-              if (s_a < a_from || s_a > a_to || s_b < b_from || s_b > b_to) continue;
-              const Vec3 pa = a.points.col(s) + u * (a.points.col(s + 1) - a.points.col(s));
-              const Vec3 pb = b.points.col(seg) + v * (b.points.col(seg + 1) - b.points.col(seg));
-              const double c = (pa - pb).norm() - ra - rb;
-              if (c < best_so_far || (c == best_so_far && j < best_tube)) {
-                best_so_far = c;
-                best_tube = j;
+            for (int seg = other.begin; seg < other.end; ++seg) {
+              const double sb0 = b.s[seg], sb1 = b.s[seg + 1];
+              // A segment wholly in the part left out (next to a shared end) has no point to give.
+              if (sb1 < b_from || sb0 > b_to) continue;
+              for (int s = run.begin; s < run.end; ++s) {
+                if (a.s[s + 1] < a_from || a.s[s] > a_to) continue;
+                double u = 0, v = 0;
+                ClosestSegmentParameters(a.points.col(s), a.points.col(s + 1), b.points.col(seg),
+                                         b.points.col(seg + 1), &u, &v);
+                const double s_a = a.s[s] + u * (a.s[s + 1] - a.s[s]);
+                const double s_b = sb0 + v * (sb1 - sb0);
+                if (s_a < a_from || s_a > a_to || s_b < b_from || s_b > b_to) continue;
+                const Vec3 pa = a.points.col(s) + u * (a.points.col(s + 1) - a.points.col(s));
+                const Vec3 pb = b.points.col(seg) + v * (b.points.col(seg + 1) - b.points.col(seg));
+                const double c = (pa - pb).norm() - ra - rb;
+                if (c < best_so_far || (c == best_so_far && j < best_tube)) {
+                  best_so_far = c;
+                  best_tube = j;
+                }
               }
             }
             return best_so_far;
@@ -218,7 +224,7 @@ std::vector<int> TubeClearanceIndex::Within(int i, double reach) const {
   std::vector<char> seen(tubes_.size(), 0);
   tree_.ForEach([&](const Eigen::AlignedBox3d& box) { return near(box, whole); },
                 [&](int k) {
-                  const int j = segments_[static_cast<size_t>(k)].first;
+                  const int j = runs_[static_cast<size_t>(k)].tube;
                   if (j == i || seen[static_cast<size_t>(j)]) return;
                   for (const Run& run : runs)
                     if (near(boxes_[static_cast<size_t>(k)], run.box)) {

@@ -61,7 +61,7 @@ struct TubeSkip {
 ClearanceHit TubeToTubeClearance(const Polyline& a, double ra, const TubeSkip& skip_a,
                                  const Polyline& b, double rb, const TubeSkip& skip_b);
 
-/// Many tubes indexed for clearance between them: every segment of every tube in one BoxTree,
+/// Many tubes indexed for clearance between them: runs of segments of every tube in one BoxTree,
 /// so that the nearest other tube of each is found by
 /// measuring only the segment pairs that could come closer than the best found so far, never
 /// the pairs far apart. Answers as TubeToTubeClearance gives them pair by pair.
@@ -85,9 +85,12 @@ class TubeClearanceIndex {
   std::vector<int> Within(int i, double reach) const;
 
  private:
+  struct IndexedRun {
+    int tube = 0, begin = 0, end = 0;  // segments [begin, end) of that tube's centreline
+  };
   std::vector<Tube> tubes_;
-  std::vector<std::pair<int, int>> segments_;  // (tube, segment): BoxTree primitives
-  std::vector<Eigen::AlignedBox3d> boxes_;     // each segment's box (of its centreline)
+  std::vector<IndexedRun> runs_;            // the BoxTree's primitives
+  std::vector<Eigen::AlignedBox3d> boxes_;  // each run's box (of its centreline)
   double widest_ = 0.0;                        // [m] the largest radius
   BoxTree tree_;
 };
