@@ -151,7 +151,12 @@ TubeClearanceIndex::TubeClearanceIndex(std::vector<Tube> tubes) : tubes_(std::mo
     if (c == nullptr || c->size() < 2) continue;
     for (const Run& run : Runs(*c, c->s[0], c->s[c->size() - 1])) {
       runs_.push_back({static_cast<int>(t), run.begin, run.end});
-      boxes_.push_back(run.box);
+      // Grown by the tube's radius: the gap to it bounds the clearance without assuming every
+      // tube is as thick as a harness's trunk.
+      Eigen::AlignedBox3d box = run.box;
+      box.min().array() -= tubes_[t].radius;
+      box.max().array() += tubes_[t].radius;
+      boxes_.push_back(box);
     }
   }
   tree_ = BoxTree(boxes_, 4);
@@ -166,10 +171,12 @@ int TubeClearanceIndex::Nearest(int i, const PairSkip& skip, double* clearance) 
     // Tube i in runs of segments, each searched with the best of all runs so far.
     for (const Run& run : Runs(a, a.s[0], a.s[a.size() - 1])) {
       best = tree_.Nearest(
-          // The centrelines' gap less both radii (the widest tube's for the other) bounds the
-          // surfaces' clearance from below, overlaps (negative clearances) included.
+          // A lower bound of the surfaces' clearance: the gap between this run and the other
+          // run's box grown by its radius, less this tube's radius; where they overlap, an
+          // overlap as deep as the two tubes can be (with the widest tube for the other).
           [&](const Eigen::AlignedBox3d& box) {
-            return box.exteriorDistance(run.box) - ra - widest_;
+            const double gap = box.exteriorDistance(run.box);
+            return gap > 0 ? gap - ra : -ra - widest_;
           },
           [&](int k, double best_so_far) {
             const IndexedRun& other = runs_[static_cast<size_t>(k)];
@@ -217,7 +224,7 @@ std::vector<int> TubeClearanceIndex::Within(int i, double reach) const {
   Eigen::AlignedBox3d whole;
   for (int k = 0; k < a.size(); ++k) whole.extend(Vec3(a.points.col(k)));
   const std::vector<Run> runs = Runs(a, a.s[0], a.s[a.size() - 1]);
-  const double grow = tubes_[static_cast<size_t>(i)].radius + widest_ + reach;
+  const double grow = tubes_[static_cast<size_t>(i)].radius + reach;  // boxes hold their radius
   auto near = [&](const Eigen::AlignedBox3d& box, const Eigen::AlignedBox3d& around) {
     return box.exteriorDistance(around) <= grow;
   };

@@ -90,7 +90,7 @@ class TubeClearanceIndex {
   };
   std::vector<Tube> tubes_;
   std::vector<IndexedRun> runs_;            // the BoxTree's primitives
-  std::vector<Eigen::AlignedBox3d> boxes_;  // each run's box (of its centreline)
+  std::vector<Eigen::AlignedBox3d> boxes_;  // each run's box, grown by its tube's radius
   double widest_ = 0.0;                        // [m] the largest radius
   BoxTree tree_;
 };
