@@ -9,7 +9,7 @@ pkgs=(build-essential cmake ninja-build pkg-config git python3-dev
       libeigen3-dev libocct-data-exchange-dev libtbb-dev libfontconfig-dev
       libcgal-dev libassimp-dev libosmesa6-dev nlohmann-json3-dev libcli11-dev
       libpng-dev libstb-dev libfreetype-dev fonts-dejavu-core pybind11-dev python3-numpy
-      libssl-dev libxml2-dev)
+      libxml2-dev)
 for arg in "$@"; do
   case "$arg" in
     --with-browser) pkgs+=(chromium chromium-driver) ;;
