@@ -58,9 +58,31 @@ inline MaterialSpec BundleMaterial(double ei, double density, double diameter) {
   return m;
 }
 
+/// A solid box [lo, hi] beside the harness (a support plate).
+struct HarnessBox {
+  std::string name;
+  Vec3 lo, hi;
+};
+
+/// The closed box as a solid's surface, faces outward.
+inline TriangleMesh BoxSurface(const Vec3& lo, const Vec3& hi) {
+  TriangleMesh m;
+  m.vertices.resize(3, 8);
+  for (int k = 0; k < 8; ++k)
+    m.vertices.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  m.faces.resize(3, 12);
+  for (int f = 0; f < 6; ++f) {
+    m.faces.col(2 * f) << quads[f][0], quads[f][1], quads[f][2];
+    m.faces.col(2 * f + 1) << quads[f][0], quads[f][2], quads[f][3];
+  }
+  return m;
+}
+
 struct HarnessLayout {
   std::string name;
   NetworkSpec spec;
+  std::vector<HarnessBox> boxes;  // also in spec.obstacles, in this order
 };
 
 /// The three bench layouts, sizes and materials drawn from `rng` (variation of about +-20 %).
@@ -87,7 +109,7 @@ inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
     b.start_junction = 0;
     s.branches = {trunk, a, b};
     s.junctions = {{"breakout", 0.0, 0.005}};
-    out.push_back({"y", s});
+    out.push_back({"y", s, {}});
   }
   {  // A trunk clamped at both ends with three breakouts and a clip between each pair.
     NetworkSpec s;
@@ -115,7 +137,7 @@ inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
       s.branches.push_back(b);
       s.junctions.push_back({"junction_" + std::to_string(k), 0.0, 0.004});
     }
-    out.push_back({"trunk3", s});
+    out.push_back({"trunk3", s, {}});
   }
   {  // A Y whose longer branch sags onto a plate under it.
     NetworkSpec s = out.front().spec;
@@ -126,15 +148,10 @@ inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
     b.supports.back().s = b.length;
     const Vec3 mid = 0.5 * (a0 + a1);
     const double top = mid.z() - 0.035;
-    TriangleMesh plate;
-    plate.vertices.resize(3, 4);
     const double w = 0.12;
-    plate.vertices << mid.x() - w, mid.x() + w, mid.x() + w, mid.x() - w, mid.y() - w, mid.y() - w,
-        mid.y() + w, mid.y() + w, top, top, top, top;
-    plate.faces.resize(3, 2);
-    plate.faces << 0, 0, 1, 2, 2, 3;
-    s.obstacles.push_back({"plate", plate});
-    out.push_back({"plate", s});
+    const HarnessBox plate{"plate", Vec3(mid.x() - w, mid.y() - w, top - 0.01), Vec3(mid.x() + w, mid.y() + w, top)};
+    s.obstacles.push_back({plate.name, BoxSurface(plate.lo, plate.hi)});
+    out.push_back({"plate", s, {plate}});
   }
   return out;
 }

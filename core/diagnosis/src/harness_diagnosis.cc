@@ -139,6 +139,8 @@ HarnessDiagnosis DiagnoseHarness(const NetworkSpec& nominal, const HarnessObserv
     hints.max_s.push_back(0.5 * nominal.branches[b].length);
     hints.rms.push_back(0.0);
     dev.points = static_cast<int>(d.size());
+    dev.s = pts[b].s;
+    dev.nominal_offset = d;
     if (d.size() == 0) continue;
     Eigen::Index top = 0;
     dev.nominal_max = d.maxCoeff(&top);
@@ -294,6 +296,7 @@ HarnessDiagnosis DiagnoseHarness(const NetworkSpec& nominal, const HarnessObserv
   for (size_t b = 0; b < nb; ++b) {
     HarnessBranchDeviation& dev = out.branches[b];
     const Eigen::VectorXd& d = d1[b];
+    dev.fitted_offset = d;
     if (d.size() == 0) continue;
     dev.fitted_max = d.maxCoeff();
     dev.fitted_rms = std::sqrt(d.squaredNorm() / static_cast<double>(d.size()));

@@ -117,23 +117,12 @@ RecordingRef ReadRecording(const FieldReader& recording, const fs::path& case_di
     recording.Fail("kind", "'" + kind + "' is unknown (expected scan, centerline or force_curve)");
   }
   ref.file = recording.RequireString("file");
-  if (ref.file.empty()) recording.Fail("file", "is empty");
-  // The format says recording paths are relative to the case: a case file must not make the tool
-  // open (and copy into reports) a file outside its own folder, such as /etc/passwd.
-  const fs::path file = fs::path(ref.file).lexically_normal();
-  if (file.is_absolute() || file.has_root_name() || file.has_root_directory()) {
-    recording.Fail("file", "'" + ref.file + "' is absolute; recording paths are relative to the case folder");
-  }
-  if (!file.empty() && *file.begin() == "..") {
-    recording.Fail("file", "'" + ref.file + "' leaves the case folder; recordings must be inside it");
-  }
-  ref.path = (case_dir / file).lexically_normal().string();
-  std::error_code ec;
-  if (!fs::is_regular_file(ref.path, ec))
-    recording.FailHere("recorded file '" + ref.file + "' not found (looked for " + ref.path + ")");
+  ref.path = CaseRelativeFile(recording, "file", case_dir.string());
   if (ref.kind == RecordingKind::kForceCurve) ref.test = ReadForceTest(recording, cable_length);
   return ref;
 }
+
+}  // namespace
 
 std::string CaseFilePath(const std::string& path) {
   std::error_code ec;
@@ -145,7 +134,32 @@ std::string CaseFilePath(const std::string& path) {
   return path;
 }
 
-}  // namespace
+std::string CaseRelativeFile(const json::FieldReader& field, const std::string& key,
+                             const std::string& case_dir) {
+  const std::string name = field.RequireString(key);
+  if (name.empty()) field.Fail(key, "is empty");
+  // The format says recording paths are relative to the case: a case file must not make the tool
+  // open (and copy into reports) a file outside its own folder, such as /etc/passwd.
+  const fs::path file = fs::path(name).lexically_normal();
+  if (file.is_absolute() || file.has_root_name() || file.has_root_directory()) {
+    field.Fail(key, "'" + name + "' is absolute; recording paths are relative to the case folder");
+  }
+  if (!file.empty() && *file.begin() == "..") {
+    field.Fail(key, "'" + name + "' leaves the case folder; recordings must be inside it");
+  }
+  const std::string path = (fs::path(case_dir) / file).lexically_normal().string();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    field.FailHere("recorded file '" + name + "' not found (looked for " + path + ")");
+  return path;
+}
+
+std::string CaseFormatOf(const std::string& path) {
+  const Json doc = json::ReadJsonFile(CaseFilePath(path));
+  return doc.is_object() && doc.contains("format") && doc["format"].is_string()
+             ? doc["format"].get<std::string>()
+             : "";
+}
 
 RecordingCase ReadRecordingCase(const std::string& path) {
   const std::string case_file = CaseFilePath(path);

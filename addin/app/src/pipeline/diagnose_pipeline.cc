@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "cablefit/app/base/batch_pool.h"
 #include "cablefit/app/diagnose/diagnose_output.h"
+#include "cablefit/app/diagnose/harness_case.h"
 #include "cablefit/app/output/output_folder.h"
 #include "cablefit/app/base/provenance.h"
 #include "cablefit/app/report/report_case.h"
@@ -15,6 +17,7 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/case_reader.h"
 #include "cablefit/formats/file_kind.h"
+#include "cablefit/formats/harness_case_reader.h"
 #include "cablefit/formats/json_util.h"
 
 namespace cablefit::addin {
@@ -97,6 +100,28 @@ DiagnosePipeline::CaseOutcome DiagnosePipeline::RunCase(int i, int fit_threads) 
   const auto t0 = Clock::now();
   try {
     const CancellationScope deadline(options_.timeout);  // the solvers check it
+    // A recording of a whole harness (harness-recording/1) is diagnosed as one network.
+    if (CaseFormatOf(file) == kHarnessRecordingFormat) {
+      const DiagnosedHarness d = DiagnoseHarnessCase(file, fit_threads);
+      o.diagnose_seconds = Since(t0);
+      const auto t1 = Clock::now();
+      const std::string& folder = folders_[static_cast<std::size_t>(i)];
+      WriteHarnessCase((fs::path(options_.out_dir) / folder).string(), d);
+      o.write_seconds = Since(t1);
+      const double seconds = Since(t0);
+      const std::string effect = !d.diagnosis.explained ? "not explained"
+                                 : d.diagnosis.effects.empty() ? "none"
+                                                               : ToString(d.diagnosis.effects.front().effect);
+      o.row = SummaryRow{d.recording.name, folder + "/report.html", "harness", effect,
+                         d.diagnosis.confidence, std::nullopt, std::nullopt, d.diagnosis.baseline_max,
+                         d.diagnosis.fitted_max, "m", seconds, ""};
+      o.ok = true;
+      Say(RunMessage::kDetail, d.recording.name + ": " + HarnessEffectsName(d) + ", confidence " +
+                                   std::to_string(static_cast<int>(std::lround(100.0 * d.diagnosis.confidence))) +
+                                   " %, " + FormatSeconds(seconds));
+      if (observer_) observer_->Finished(i);
+      return o;
+    }
     DiagnoseCaseOptions options;
     options.shape.threads = fit_threads;
     const std::string label = fs::path(file).parent_path().filename().string() + ": ";

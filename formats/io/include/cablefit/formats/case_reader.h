@@ -6,6 +6,7 @@
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/rod/recording_case.h"
+#include "cablefit/formats/json_util.h"
 
 namespace cablefit {
 
@@ -17,6 +18,19 @@ inline constexpr const char* kRecordingFormat = "cable-recording/1";
 /// paths are resolved relative to the case file and must exist. Every problem throws
 /// FileError(case file, one-line problem), e.g. "clamps[1].s must be positive, got -0.1".
 RecordingCase ReadRecordingCase(const std::string& path);
+
+/// The case file a path names: the path itself, or the case.json in that folder (FileError when
+/// the folder holds none).
+std::string CaseFilePath(const std::string& path);
+
+/// The `format` of a case file (or of the case.json in a folder), "" when it has none. Reading
+/// problems throw FileError.
+std::string CaseFormatOf(const std::string& path);
+
+/// The file named by field `key` of `field`, resolved in `case_dir`: relative, inside the case
+/// folder and existing, or FileError naming the field.
+std::string CaseRelativeFile(const json::FieldReader& field, const std::string& key,
+                             const std::string& case_dir);
 
 /// Case files found under some command-line paths.
 struct CaseFileList {

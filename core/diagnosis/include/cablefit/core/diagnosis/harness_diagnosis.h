@@ -86,6 +86,9 @@ struct HarnessBranchDeviation {
   /// [m] the stretch where the nominal mismatch stands out (above half its largest value and
   /// three noise sigmas); empty when the branch matches.
   std::optional<std::pair<double, double>> mismatch;
+  /// Per point used: its arc length along the branch [m] and its distance to the nominal and to
+  /// the fitted centreline [m] (pictures, plots).
+  Eigen::VectorXd s, nominal_offset, fitted_offset;
 };
 
 /// A model that was fitted: its effects, its BIC and its largest remaining deviation.
