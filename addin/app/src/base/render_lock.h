@@ -1,5 +1,6 @@
-// The one lock around the OSMesa renderer for the relax pictures (it is entered one thread at a
-// time; see relax_report.cc).
+// The one lock around the OSMesa renderer, for every picture of every command: contexts are per
+// thread, but llvmpipe already uses every core and the GL state of the render library has not been
+// audited for concurrent use.
 #pragma once
 
 #include <mutex>

@@ -28,11 +28,6 @@
 
 namespace cablefit::addin {
 
-std::mutex& RenderMutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
 namespace {
 
 // The smallest top of the deviation colour scale [mm]: below a millimetre a drawing and a

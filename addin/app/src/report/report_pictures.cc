@@ -13,16 +13,10 @@
 #include "cablefit/formats/png_file.h"
 #include "cablefit/app/diagnose/diagnose_output.h"
 #include "cablefit/app/base/report_html.h"
+#include "base/render_lock.h"
 
 namespace cablefit::addin {
 namespace {
-
-// One OSMesa renderer at a time: contexts are per thread, but llvmpipe already uses every core
-// and the GL state of the render library has not been audited for concurrent use.
-std::mutex& RenderMutex() {
-  static std::mutex mutex;
-  return mutex;
-}
 
 using Intervals = std::vector<std::pair<double, double>>;
 
