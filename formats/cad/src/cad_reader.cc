@@ -38,6 +38,7 @@
 #include "flat_cores.h"
 #include "flat_recovery.h"
 #include "loose_faces.h"
+#include "rigid_pipes.h"
 #include "tube_pieces.h"
 #include "curve_routes.h"
 #include "occt_session.h"
@@ -407,8 +408,9 @@ void DemoteDucts(HarnessDrawing* drawing, double relative_deflection) {
       const Eigen::Matrix3Xd& p = cables[j].centreline.points;
       for (Eigen::Index k = 0; k < p.cols(); ++k) {
         const Vec3 q = p.col(k);
+        // Through the bore, not only touching its end (a pipe elbow welded to it).
         const double along = (q - a).dot((b - a).normalized());
-        if (along > 0 && along < (b - a).norm() && SegmentDistance(q, a, b) < bore) {
+        if (along > bore && along < (b - a).norm() - bore && SegmentDistance(q, a, b) < bore) {
           duct[i] = true;
           break;
         }
@@ -467,6 +469,26 @@ void DemoteStubs(const CadReadOptions& options, internal::AbsorbedTubes* absorbe
     self.is_cable = true;
     self.index = static_cast<int>(c);
     absorbed->Mark(self, "'" + name + "': " + line, drawing);
+  }
+}
+
+// Straight hollow tubes fitted with flanges or pipe elbows are rigid pipes (FindRigidPipes): solid
+// parts, like the fittings they are drawn with.
+void DemoteRigidPipes(const CadReadOptions& options, internal::AbsorbedTubes* absorbed,
+                      HarnessDrawing* drawing, const std::vector<internal::DrawnTube>& tubes) {
+  for (const internal::RigidPipe& pipe : internal::FindRigidPipes(tubes, *absorbed, *drawing)) {
+    const DrawnCable& cable = drawing->cables[static_cast<size_t>(pipe.cable)];
+    DrawnSolid solid;
+    solid.name = cable.name;
+    solid.has_color = cable.has_color;
+    solid.color = cable.color;
+    solid.mesh = Tessellate(cable.shape->shape, options.mesh_relative_deflection);
+    solid.shape = cable.shape;
+    drawing->solids.push_back(std::move(solid));
+    internal::DrawnTube self;
+    self.is_cable = true;
+    self.index = pipe.cable;
+    absorbed->Mark(self, pipe.why, drawing);
   }
 }
 
@@ -580,6 +602,7 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
     MergeCoresIntoFlatJackets(tubes, &drawing, &absorbed);
     MergeCoreTails(tubes, options.min_tube_aspect, options.junction_tolerance, &drawing, &absorbed);
     DemoteStubs(options, &absorbed, &drawing);
+    DemoteRigidPipes(options, &absorbed, &drawing, tubes);
     KeepBreakoutBranches(tubes, options.junction_tolerance, &absorbed, &drawing);
     absorbed.RemoveFrom(&drawing);
   } catch (const Standard_Failure& e) {
