@@ -17,9 +17,11 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/internal/tube_slices.h"
 #include "cablefit/formats/mesh_file.h"
+#include "concentric_layers.h"
 #include "hollow_tubes.h"
 #include "mcf_skeleton.h"
 #include "skeleton_routes.h"
+#include "vertex_weld.h"
 
 namespace cablefit {
 namespace {
@@ -496,6 +498,19 @@ bool Coaxial(const MeshTube& inner, const MeshTube& outer) {
   return true;
 }
 
+// Component `component` of `diameter` [m] drawn inside `outer` around its axis: its layer. A
+// surface facing inwards bounds the hollow (the bore of a hose drawn as two shells); a layer that
+// fits the bore fills it.
+void AddLayer(double diameter, int component, bool cavity, MeshTube* outer) {
+  if (cavity) {
+    if (outer->inner_diameter == 0) outer->inner_diameter = diameter;
+    return;
+  }
+  outer->layers.push_back(diameter);
+  outer->layer_components.push_back(component);
+  if (outer->inner_diameter > 0 && diameter >= 0.9 * outer->inner_diameter) outer->inner_diameter = 0;
+}
+
 // A cable drawn as concentric closed surfaces (a coax: conductor, dielectric, jacket, each a
 // shell of its own) is one cable of the outer diameter: each tube lying along the axis of a
 // wider one of another component, within it, is that tube's layer. Its bore, if it has one,
@@ -516,19 +531,11 @@ void MergeConcentricLayers(std::vector<MeshTube>* tubes, const std::vector<char>
           !(inner.diameter < 0.98 * outer.diameter) || !Coaxial(inner, outer))
         continue;
       absorbed[order[ii]] = 1;
-      // A surface facing inwards bounds the hollow: the bore of a hose drawn as two shells.
-      if (cavity[static_cast<size_t>(inner.component)]) {
-        if (outer.inner_diameter == 0) outer.inner_diameter = inner.diameter;
-        continue;
-      }
-      outer.layers.push_back(inner.diameter);
-      outer.layer_components.push_back(inner.component);
+      AddLayer(inner.diameter, inner.component, cavity[static_cast<size_t>(inner.component)], &outer);
       for (size_t k = 0; k < inner.layers.size(); ++k) {
         outer.layers.push_back(inner.layers[k]);
         outer.layer_components.push_back(inner.layer_components[k]);
       }
-      if (outer.inner_diameter > 0 && inner.diameter >= 0.9 * outer.inner_diameter)
-        outer.inner_diameter = 0;  // the bore is filled
     }
   }
   std::vector<MeshTube> kept;
@@ -563,10 +570,49 @@ TriangleMesh WithoutDoubledFaces(const TriangleMesh& mesh) {
 }
 
 MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
-  MeshContents out;
-  const std::vector<TriangleMesh> components = ConnectedComponents(WithoutDoubledFaces(mesh));
-  for (size_t c = 0; c < components.size(); ++c) {
+  // Touching solids meshed one by one: where their tessellations of the surface they share agree
+  // (every face doubled), they are the one closed surface around them all; where they do not, each
+  // is its own closed surface, and ConnectedComponents tells them apart at their common rims.
+  const TriangleMesh welded = internal::WeldNearVertices(mesh);
+  TriangleMesh around = WithoutDoubledFaces(welded);
+  if (!IsClosedSurface(around)) around = welded;
+  const std::vector<TriangleMesh> components = ConnectedComponents(around);
+  std::vector<char> cavity(components.size());
+  for (size_t c = 0; c < components.size(); ++c) cavity[c] = SignedVolume(components[c]) < 0;
+  // Per component: its tubes, or the part it is. The widest first, so that a layer drawn inside
+  // a tube already read is known as one without a skeleton of its own.
+  std::vector<std::vector<MeshTube>> tubes_of(components.size());
+  std::vector<std::optional<MeshPart>> part_of(components.size());
+  std::vector<size_t> order(components.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto size_of = [&](size_t c) {
+    const TriangleMesh& m = components[c];
+    return (m.vertices.rowwise().maxCoeff() - m.vertices.rowwise().minCoeff()).norm();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return size_of(a) > size_of(b); });
+  for (const size_t c : order) {
     const int component = static_cast<int>(c);
+    bool layer = false;
+    for (const size_t h : order) {
+      for (MeshTube& host : tubes_of[h]) {
+        const std::optional<double> diameter = internal::ConcentricLayerDiameter(components[c], host);
+        if (!diameter || !(*diameter < 0.98 * host.diameter)) continue;
+        AddLayer(*diameter, component, cavity[c], &host);
+        layer = true;
+        break;
+      }
+      if (layer) break;
+    }
+    if (layer) continue;
+    // A surface with a hole through it (a hose, a conduit): its own skeleton is a loop through the
+    // wall, no route; its walls are read instead, without the skeleton it would cost first.
+    if (internal::EulerCharacteristic(components[c]) == 0 && IsClosedSurface(components[c])) {
+      if (std::optional<MeshTube> hollow = HollowTube(components[c], component);
+          hollow && hollow->centreline.ChordLength() >= min_aspect * hollow->diameter) {
+        tubes_of[c].push_back(std::move(*hollow));
+        continue;
+      }
+    }
     try {
       std::vector<MeshTube> more = TubesOfComponent(components[c], component);
       if (more.size() == 1) {
@@ -578,24 +624,26 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
                         " is a short stout solid (%.3g mm long, %.3g mm across, under %g "
                         "diameters): a part, not a cable",
                         1e3 * length, 1e3 * diameter, min_aspect);
-          out.parts.push_back({component, components[c],
-                               "component " + std::to_string(component) + why,
-                               more.front().centreline, diameter});
+          part_of[c] = MeshPart{component, components[c], "component " + std::to_string(component) + why,
+                                more.front().centreline, diameter};
           continue;
         }
       }
-      for (auto& t : more) out.tubes.push_back(std::move(t));
+      tubes_of[c] = std::move(more);
     } catch (const InvalidInput& e) {
       if (std::optional<MeshTube> hollow = HollowTube(components[c], component);
           hollow && hollow->centreline.ChordLength() >= min_aspect * hollow->diameter) {
-        out.tubes.push_back(std::move(*hollow));
+        tubes_of[c].push_back(std::move(*hollow));
       } else {
-        out.parts.push_back({component, components[c], e.what(), {}, 0.0});
+        part_of[c] = MeshPart{component, components[c], e.what(), {}, 0.0};
       }
     }
   }
-  std::vector<char> cavity(components.size());
-  for (size_t c = 0; c < components.size(); ++c) cavity[c] = SignedVolume(components[c]) < 0;
+  MeshContents out;
+  for (size_t c = 0; c < components.size(); ++c) {
+    for (MeshTube& t : tubes_of[c]) out.tubes.push_back(std::move(t));
+    if (part_of[c]) out.parts.push_back(std::move(*part_of[c]));
+  }
   MergeConcentricLayers(&out.tubes, cavity);
   return out;
 }
