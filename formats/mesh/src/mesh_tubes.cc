@@ -405,21 +405,31 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
         pts = WithoutFoldBacks(pts);
         const int n = static_cast<int>(pts.size());
         // Carry free ends out to the caps, where the skeleton stops short.
+        std::optional<Vec3> front_out, back_out;  // a flat cap's outward normal at each end
         if (route.start_is_end) {
           const Vec3 out = (pts[0] - pts[std::min(4, n - 1)]).normalized();
-          EndAtCap(CapEnd(mesh, pts[0], out, radius), radius, /*front=*/true, &pts);
+          const TubeEnd cap = CapEnd(mesh, pts[0], out, radius);
+          front_out = cap.normal;
+          EndAtCap(cap, radius, /*front=*/true, &pts);
         }
         if (route.finish_is_end) {
           const int m = static_cast<int>(pts.size());
           const Vec3 out = (pts[m - 1] - pts[std::max(0, m - 5)]).normalized();
-          EndAtCap(CapEnd(mesh, pts[m - 1], out, radius), radius, /*front=*/false, &pts);
+          const TubeEnd cap = CapEnd(mesh, pts[m - 1], out, radius);
+          back_out = cap.normal;
+          EndAtCap(cap, radius, /*front=*/false, &pts);
         }
         MeshTube tube;
         tube.component = component;
         tube.diameter = 2 * radius;
         tube.fit_error = std::sqrt(std::accumulate(residuals.begin(), residuals.end(), 0.0) /
                                    static_cast<double>(residuals.size()));
-        if (CanonicalBefore(pts.back(), pts.front(), 0.1 * r0)) std::reverse(pts.begin(), pts.end());
+        if (CanonicalBefore(pts.back(), pts.front(), 0.1 * r0)) {
+          std::reverse(pts.begin(), pts.end());
+          std::swap(front_out, back_out);
+        }
+        if (front_out) tube.start_direction = -*front_out;
+        if (back_out) tube.end_direction = *back_out;
         tube.centreline.points.resize(3, static_cast<Eigen::Index>(pts.size()));
         for (size_t i = 0; i < pts.size(); ++i) tube.centreline.points.col(static_cast<Eigen::Index>(i)) = pts[i];
         tube.centreline.ParameteriseByChords(0.0);

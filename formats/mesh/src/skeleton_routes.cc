@@ -43,11 +43,12 @@ std::vector<std::pair<int, int>> WedgePairs(const TriangleMesh& mesh, int a, int
   }
   std::sort(around.begin(), around.end(),
             [](const Around& x, const Around& y) { return x.angle < y.angle; });
-  // Faces within kSameDirection of one direction are two solids touching along one surface (the
-  // solids' own tessellations of it cross each other by a fraction of a degree): the one that
-  // closes its solid comes first, so that each solid's wedge lies between neighbours. The runs of
-  // such faces are found from a gap wider than that, as the directions go round.
-  constexpr double kSameDirection = 0.02;  // [rad], a degree: no solid's wedge is that thin
+  // Faces within kSameDirection of one direction are two solids touching along one surface: their
+  // own tessellations of it cross each other (by 2 degrees where a 16-gon meets a 20-gon, 7.5
+  // where an 8-gon meets a 12-gon). The one that closes its solid comes first, so that each
+  // solid's wedge lies between neighbours. The runs of such faces are found from a gap wider than
+  // that, as the directions go round.
+  constexpr double kSameDirection = 0.15;  // [rad], 8.6 degrees: no solid of a cable is that thin
   const size_t n = around.size();
   size_t start = 0;
   for (size_t i = 0; i < n; ++i) {
