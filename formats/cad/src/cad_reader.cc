@@ -11,8 +11,8 @@
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
-#include <TCollection_HAsciiString.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -20,28 +20,28 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
-#include <map>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
+#include "breakout_branches.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
-#include "cad_shape_handle.h"
 #include "cad_read_in_process.h"
-#include "breakout_branches.h"
+#include "cad_shape_handle.h"
 #include "core_tails.h"
 #include "crash_probe.h"
 #include "curve_pieces.h"
+#include "curve_routes.h"
 #include "drawn_sweeps.h"
 #include "flat_cores.h"
 #include "flat_recovery.h"
 #include "loose_faces.h"
+#include "occt_session.h"
 #include "rigid_pipes.h"
 #include "tube_pieces.h"
-#include "curve_routes.h"
-#include "occt_session.h"
 #include "tube_recovery.h"
 #include "xde_document.h"
 
@@ -251,20 +251,23 @@ class DrawingBuilder {
   // The bodies drawn as loose faces, after the walk.
   void AddLooseBodies() {
     for (const internal::LooseBody& body : internal::LooseFaceBodies(loose_))
-      AddBody(body.shape, loose_styles_[static_cast<size_t>(body.style)], RecoverTube(body.shape, TubeOptions()));
+      AddBody(body.shape, loose_styles_[static_cast<size_t>(body.style)],
+              RecoverTube(body.shape, TubeOptions()));
   }
 
   TubeRecoveryOptions TubeOptions() const {
     TubeRecoveryOptions tube_options;
     tube_options.sample_spacing = options_.sample_spacing / kMetresPerOcctUnit;
     tube_options.min_area_fraction = options_.min_tube_area_fraction;
-    tube_options.min_aspect = 0;  // slenderness is checked by AddBody, to say why a tube is no cable
+    // Slenderness is checked by AddBody, to say why a tube is no cable.
+    tube_options.min_aspect = 0;
     return tube_options;
   }
 
   // One body and the tube it is, if it is one: a cable when slender, else a flat cable or a
   // solid part.
-  void AddBody(const TopoDS_Shape& body, const Style& body_style, std::optional<RecoveredTube> tube) {
+  void AddBody(const TopoDS_Shape& body, const Style& body_style,
+               std::optional<RecoveredTube> tube) {
     // A stout "tube" may be a slender flat strip whose long faces are round along the route (a
     // strip bent edgewise is a piece of a cylinder as wide as the strip): the strip's matched end
     // faces say which it is.
@@ -290,7 +293,8 @@ class DrawingBuilder {
                       "slender cable: kept as a solid part",
                       slenderness, 2 * tube->radius, options_.min_tube_aspect);
         drawing_->skipped.push_back(
-            "'" + (body_style.name.empty() ? std::string("unnamed") : body_style.name) + "': " + line);
+            "'" + (body_style.name.empty() ? std::string("unnamed") : body_style.name) +
+            "': " + line);
         tube.reset();
       }
     } else if (std::optional<DrawnCable> flat = FlatCable(body, body_style)) {
@@ -305,8 +309,9 @@ class DrawingBuilder {
         std::snprintf(line, sizeof line,
                       "'%s': its cross-sections stray from %.4g mm across (%.4g to %.4g mm), a "
                       "loosely approximated sweep: read as a tube of %.4g mm",
-                      body_style.name.empty() ? "unnamed" : body_style.name.c_str(), 2 * tube->radius,
-                      2 * tube->min_section_radius, 2 * tube->max_section_radius, 2 * tube->radius);
+                      body_style.name.empty() ? "unnamed" : body_style.name.c_str(),
+                      2 * tube->radius, 2 * tube->min_section_radius, 2 * tube->max_section_radius,
+                      2 * tube->radius);
         drawing_->warnings.push_back(line);
       }
       DrawnCable cable;

@@ -180,7 +180,8 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
       // closer than the diameter on a cable many gaps long are a loop; a stub shorter than its
       // diameter (a segment between two nodes of a harness network) is not, and written as one
       // tube it reads back as one.
-      if (m >= 4 && gap < diameter / kMetresPerOcctUnit && gap < 0.1 * length / kMetresPerOcctUnit) {
+      if (m >= 4 && gap < diameter / kMetresPerOcctUnit &&
+          gap < 0.1 * length / kMetresPerOcctUnit) {
         add(rows.leftCols(m / 2 + 1));
         add(rows.rightCols(m - m / 2));
       } else {

@@ -1,8 +1,8 @@
 #include "loose_faces.h"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepGProp.hxx>
-#include <BRepAdaptor_Surface.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
@@ -10,7 +10,6 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
-
 #include <algorithm>
 #include <numeric>
 #include <optional>
@@ -71,7 +70,8 @@ bool IsCapAt(const TopoDS_Shape& face, const Eigen::Vector3d& centre, double rad
   if ((Eigen::Vector3d(c.X(), c.Y(), c.Z()) - centre).norm() > kSamePoint * radius) return false;
   for (TopExp_Explorer ex(face, TopAbs_VERTEX); ex.More(); ex.Next()) {
     const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(ex.Current()));
-    if ((Eigen::Vector3d(p.X(), p.Y(), p.Z()) - centre).norm() > (1 + kSamePoint) * radius) return false;
+    if ((Eigen::Vector3d(p.X(), p.Y(), p.Z()) - centre).norm() > (1 + kSamePoint) * radius)
+      return false;
   }
   return true;
 }
@@ -83,7 +83,8 @@ class UnionFind {
   }
   int Find(int i) {
     while (parent_[static_cast<size_t>(i)] != i) {
-      parent_[static_cast<size_t>(i)] = parent_[static_cast<size_t>(parent_[static_cast<size_t>(i)])];
+      parent_[static_cast<size_t>(i)] =
+          parent_[static_cast<size_t>(parent_[static_cast<size_t>(i)])];
       i = parent_[static_cast<size_t>(i)];
     }
     return i;
@@ -105,9 +106,12 @@ std::vector<int> TubeGroups(const std::vector<Face>& faces) {
   std::vector<int> walls;
   for (int i = 0; i < n; ++i)
     if (faces[static_cast<size_t>(i)].wall) walls.push_back(i);
-  const auto wall = [&](int i) -> const TubeFaceEnds& { return faces[static_cast<size_t>(i)].wall->ends; };
+  const auto wall = [&](int i) -> const TubeFaceEnds& {
+    return faces[static_cast<size_t>(i)].wall->ends;
+  };
   const auto same_radius = [&](int i, int j) {
-    return std::abs(wall(i).radius - wall(j).radius) <= kSameRadius * std::max(wall(i).radius, wall(j).radius);
+    return std::abs(wall(i).radius - wall(j).radius) <=
+           kSameRadius * std::max(wall(i).radius, wall(j).radius);
   };
   UnionFind groups(n);
   // Halves and other repeats of one stretch; inner and outer walls of one stretch.
@@ -143,7 +147,8 @@ std::vector<int> TubeGroups(const std::vector<Face>& faces) {
     const Face& f = faces[static_cast<size_t>(i)];
     if (f.wall || BRepAdaptor_Surface(TopoDS::Face(f.shape)).GetType() != GeomAbs_Plane) continue;
     for (const int j : walls) {
-      if (IsCapAt(f.shape, wall(j).start, wall(j).radius) || IsCapAt(f.shape, wall(j).end, wall(j).radius)) {
+      if (IsCapAt(f.shape, wall(j).start, wall(j).radius) ||
+          IsCapAt(f.shape, wall(j).end, wall(j).radius)) {
         group_of[static_cast<size_t>(i)] = group_of[static_cast<size_t>(j)];
         break;
       }
@@ -182,7 +187,8 @@ std::vector<LooseBody> LooseFaceBodies(const std::vector<LooseFaceGroup>& groups
   std::vector<std::vector<int>> shells;  // per sewn shell made of walls and caps: its faces
   std::vector<std::pair<TopoDS_Shape, int>> sewn;
   for (const LooseFaceGroup& group : groups)
-    for (TopoDS_Shape& shell : SewFaces(group.faces)) sewn.emplace_back(std::move(shell), group.style);
+    for (TopoDS_Shape& shell : SewFaces(group.faces))
+      sewn.emplace_back(std::move(shell), group.style);
   for (const auto& [shell, style] : sewn) {
     std::vector<int> members;
     for (TopExp_Explorer ex(shell, TopAbs_FACE); ex.More(); ex.Next()) {
@@ -198,8 +204,9 @@ std::vector<LooseBody> LooseFaceBodies(const std::vector<LooseFaceGroup>& groups
   // A shell with a face that is neither wall nor cap (a bracket with a bore) stays as sewn.
   std::vector<char> regrouped(faces.size(), 0);
   for (size_t s = 0; s < shells.size(); ++s) {
-    const bool tube_faces = std::all_of(shells[s].begin(), shells[s].end(),
-                                        [&](int f) { return group_of[static_cast<size_t>(f)] >= 0; });
+    const bool tube_faces = std::all_of(shells[s].begin(), shells[s].end(), [&](int f) {
+      return group_of[static_cast<size_t>(f)] >= 0;
+    });
     if (!tube_faces) {
       bodies.push_back({sewn[s].first, sewn[s].second});
       continue;

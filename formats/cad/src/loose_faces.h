@@ -3,7 +3,6 @@
 #pragma once
 
 #include <TopoDS_Shape.hxx>
-
 #include <vector>
 
 namespace cablefit::internal {

@@ -62,7 +62,8 @@ bool IsFlangeAt(const DrawnSolid& solid, const Vec3& end, const Vec3& out, doubl
   // Around the end: the end inside its extent along the axis (a slip-on flange's hub over the
   // pipe, a weld-neck's face at the pipe's end), within a tube radius.
   if (lo > radius || hi < -radius) return false;
-  return std::all_of(reach.begin(), reach.end(), [&](double r) { return r >= kRoundness * widest; });
+  return std::all_of(reach.begin(), reach.end(),
+                     [&](double r) { return r >= kRoundness * widest; });
 }
 
 // The turn [rad] and bend radius [m] of a route (3 x n [m]): the angle between its end tangents
@@ -87,7 +88,8 @@ std::string Mm(double metres) {
 }  // namespace
 
 std::vector<RigidPipe> FindRigidPipes(const std::vector<DrawnTube>& tubes,
-                                      const AbsorbedTubes& absorbed, const HarnessDrawing& drawing) {
+                                      const AbsorbedTubes& absorbed,
+                                      const HarnessDrawing& drawing) {
   // Pipe elbows: stout hollow tube parts bent tightly.
   std::vector<const DrawnTube*> elbows;
   for (const DrawnTube& t : tubes) {
@@ -100,8 +102,9 @@ std::vector<RigidPipe> FindRigidPipes(const std::vector<DrawnTube>& tubes,
   std::vector<RigidPipe> pipes;
   for (size_t c = 0; c < drawing.cables.size(); ++c) {
     const DrawnCable& cable = drawing.cables[c];
-    if ((c < absorbed.CableCount() && absorbed.CableMarked(c)) || cable.source != CableSourceKind::kTube ||
-        cable.flat || !(cable.inner_diameter > 0) || cable.centreline.size() < 2)
+    if ((c < absorbed.CableCount() && absorbed.CableMarked(c)) ||
+        cable.source != CableSourceKind::kTube || cable.flat || !(cable.inner_diameter > 0) ||
+        cable.centreline.size() < 2)
       continue;
     const double radius = 0.5 * cable.diameter;
     const Eigen::Matrix3Xd& p = cable.centreline.points;
@@ -114,7 +117,8 @@ std::vector<RigidPipe> FindRigidPipes(const std::vector<DrawnTube>& tubes,
       const Vec3 out = side == 0 ? Vec3(-axis) : axis;
       for (const DrawnSolid& solid : drawing.solids) {
         if (IsFlangeAt(solid, ends[side], out, radius)) {
-          fitting = "flanged at an end by '" + (solid.name.empty() ? std::string("unnamed") : solid.name) + "'";
+          fitting = "flanged at an end by '" +
+                    (solid.name.empty() ? std::string("unnamed") : solid.name) + "'";
           break;
         }
       }
@@ -125,16 +129,18 @@ std::vector<RigidPipe> FindRigidPipes(const std::vector<DrawnTube>& tubes,
                            (q.col(q.cols() - 1) - ends[side]).norm() <= kMeet * radius;
         if (meets && std::abs(elbow->radius - radius) <= kMeet * radius) {
           const std::string& name = drawing.solids[static_cast<size_t>(elbow->index)].name;
-          fitting = "joined at an end to the pipe elbow '" + (name.empty() ? std::string("unnamed") : name) + "'";
+          fitting = "joined at an end to the pipe elbow '" +
+                    (name.empty() ? std::string("unnamed") : name) + "'";
           break;
         }
       }
     }
     if (fitting.empty()) continue;
-    pipes.push_back({static_cast<int>(c), "'" + (cable.name.empty() ? std::string("unnamed") : cable.name) +
-                                              "': a straight tube (" + Mm(cable.diameter) + " across, " +
-                                              Mm((ends[1] - ends[0]).norm()) + " long) " + fitting +
-                                              ": a rigid pipe, kept as a solid part"});
+    pipes.push_back(
+        {static_cast<int>(c), "'" + (cable.name.empty() ? std::string("unnamed") : cable.name) +
+                                  "': a straight tube (" + Mm(cable.diameter) + " across, " +
+                                  Mm((ends[1] - ends[0]).norm()) + " long) " + fitting +
+                                  ": a rigid pipe, kept as a solid part"});
   }
   return pipes;
 }

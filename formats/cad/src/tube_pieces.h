@@ -2,7 +2,6 @@
 #pragma once
 
 #include <TopoDS_Shape.hxx>
-
 #include <optional>
 #include <vector>
 

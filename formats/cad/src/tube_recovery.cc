@@ -115,7 +115,8 @@ SectionCounts CountSections(const std::vector<internal::CircleFit>& fits, const 
   SectionCounts counts;
   std::vector<double> radii;
   for (const internal::CircleFit& fit : fits)
-    if (fit.ok && fit.rms_residual <= round.clean_residual * fit.radius) radii.push_back(fit.radius);
+    if (fit.ok && fit.rms_residual <= round.clean_residual * fit.radius)
+      radii.push_back(fit.radius);
   if (radii.empty()) return counts;
   counts.radius = Median(radii);
   for (const internal::CircleFit& fit : fits) {
@@ -172,9 +173,10 @@ double CircleFamilyRadius(const BRepAdaptor_Surface& surface, bool across_is_u, 
   }
   // Nine samples: one of them may be off where a face of hundreds allows 5 %.
   const SectionCounts counts = CountSections(fits, round);
-  const bool tube = counts.radius > 0 && counts.clean >= std::min(round.min_clean * kIsos, kIsos - 1.0) &&
-                    counts.rough >= kIsos - 1 &&
-                    travel >= kMinCentreTravel * LengthAlong(surface, across_is_u, b0, b1, 0.5 * (a0 + a1));
+  const bool tube =
+      counts.radius > 0 && counts.clean >= std::min(round.min_clean * kIsos, kIsos - 1.0) &&
+      counts.rough >= kIsos - 1 &&
+      travel >= kMinCentreTravel * LengthAlong(surface, across_is_u, b0, b1, 0.5 * (a0 + a1));
   return tube ? counts.radius : 0;
 }
 
@@ -247,8 +249,8 @@ std::optional<LateralFace> SampleLateralFace(const TopoDS_Face& face, double spa
     // mean of a ringing approximation's radii is not the cable's). Its residual: its distance
     // from a circle of the face's radius about its centre.
     const bool own = std::abs(fit.radius - radius) <= kExactRoundness.clean_radius * radius;
-    lateral.sections.push_back({fit.centre, own ? fit.radius : radius,
-                                std::hypot(fit.rms_residual, fit.radius - radius)});
+    lateral.sections.push_back(
+        {fit.centre, own ? fit.radius : radius, std::hypot(fit.rms_residual, fit.radius - radius)});
     lateral.min_radius = std::min(lateral.min_radius, fit.radius);
     lateral.max_radius = std::max(lateral.max_radius, fit.radius);
   }
@@ -296,8 +298,8 @@ std::optional<Chain> ChainRuns(std::vector<Run> runs, double tol) {
     }
   }
   Chain chain;
-  chain.twice = std::all_of(unique.begin(), unique.end(),
-                            [](const Run& u) { return u.arc > 3 * M_PI; });
+  chain.twice =
+      std::all_of(unique.begin(), unique.end(), [](const Run& u) { return u.arc > 3 * M_PI; });
   std::vector<Section>& route = chain.sections;
   route = std::move(unique.front().sections);
   unique.erase(unique.begin());
@@ -329,8 +331,10 @@ std::optional<TubeFaceEnds> LateralFaceEnds(const TopoDS_Face& face) {
     const BRepAdaptor_Surface surface(face);
     const std::optional<Across> across = AcrossOf(surface, face);
     if (!across) return std::nullopt;
-    const internal::CircleFit start = SectionAt(surface, across->is_u, across->b0, across->a0, across->a1);
-    const internal::CircleFit end = SectionAt(surface, across->is_u, across->b1, across->a0, across->a1);
+    const internal::CircleFit start =
+        SectionAt(surface, across->is_u, across->b0, across->a0, across->a1);
+    const internal::CircleFit end =
+        SectionAt(surface, across->is_u, across->b1, across->a0, across->a1);
     if (!start.ok || !end.ok) return std::nullopt;
     return TubeFaceEnds{start.centre, end.centre, across->radius};
   } catch (const Standard_Failure&) {
@@ -361,7 +365,8 @@ std::optional<RecoveredTube> RecoverTube(const TopoDS_Shape& shape,
         return std::abs(g.radius - r) <= kExactRoundness.clean_radius * g.radius;
       });
       if (group == groups.end())
-        group = groups.insert(groups.end(), RadiusGroup{r, {}, lateral->min_radius, lateral->max_radius});
+        group = groups.insert(groups.end(),
+                              RadiusGroup{r, {}, lateral->min_radius, lateral->max_radius});
       group->runs.push_back({std::move(lateral->sections), lateral->arc});
       group->min_radius = std::min(group->min_radius, lateral->min_radius);
       group->max_radius = std::max(group->max_radius, lateral->max_radius);

@@ -1,12 +1,11 @@
 // Recovering a swept tube's centreline and diameter from its B-rep faces.
 #pragma once
 
+#include <Eigen/Core>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <optional>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace cablefit {
 
@@ -14,7 +13,7 @@ struct RecoveredTube {
   Eigen::Matrix3Xd centres;  // 3 x n [OCCT unit], ordered along the tube
   double radius = 0.0;       // [OCCT unit] outer radius
   double inner_radius = 0.0; // [OCCT unit] bore of a hollow tube, 0 for a solid one
-  double rms_residual = 0.0; // RMS distance of the sections from circles of `radius` [OCCT unit]
+  double rms_residual = 0.0;  // RMS distance of the sections from circles of `radius` [OCCT unit]
   // The smallest and largest of the outer wall's section circles [OCCT unit]: apart by more than
   // a few thousandths of the radius only on a loosely approximated sweep.
   double min_section_radius = 0.0, max_section_radius = 0.0;

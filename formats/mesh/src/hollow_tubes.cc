@@ -92,7 +92,8 @@ std::optional<TriangleMesh> CappedRegion(const TriangleMesh& mesh, const FacesOf
   wall.faces.resize(3, static_cast<Eigen::Index>(faces.size()) + cap_faces);
   Eigen::Index row = 0;
   for (int f : faces)
-    wall.faces.col(row++) << local[mesh.faces(0, f)], local[mesh.faces(1, f)], local[mesh.faces(2, f)];
+    wall.faces.col(row++) << local[mesh.faces(0, f)], local[mesh.faces(1, f)],
+        local[mesh.faces(2, f)];
   for (size_t l = 0; l < loops.size(); ++l) {
     const int centre = nv + static_cast<int>(l);
     Vec3 c = Vec3::Zero();
@@ -131,7 +132,8 @@ std::vector<int> ConcaveRegions(const TriangleMesh& mesh, const FacesOfEdge& fac
         count(v) > 0 && (sum.col(v) / count(v) - mesh.vertices.col(v)).dot(normal.col(v)) > 0;
   std::vector<int> region(static_cast<size_t>(mesh.faces.cols()), 1);
   for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f)
-    if (concave[static_cast<size_t>(mesh.faces(0, f))] && concave[static_cast<size_t>(mesh.faces(1, f))] &&
+    if (concave[static_cast<size_t>(mesh.faces(0, f))] &&
+        concave[static_cast<size_t>(mesh.faces(1, f))] &&
         concave[static_cast<size_t>(mesh.faces(2, f))])
       region[static_cast<size_t>(f)] = 0;
   return region;
@@ -178,10 +180,12 @@ std::vector<TriangleMesh> CappedWalls(const TriangleMesh& mesh) {
       mean.normalize();
       bool flat = true;
       for (Eigen::Index f = 0; f < nf && flat; ++f)
-        flat = region[static_cast<size_t>(f)] != r || normal[static_cast<size_t>(f)].dot(mean) > kFlatCosine;
+        flat = region[static_cast<size_t>(f)] != r ||
+               normal[static_cast<size_t>(f)].dot(mean) > kFlatCosine;
       if (flat) continue;
     }
-    if (std::optional<TriangleMesh> wall = CappedRegion(mesh, faces_of, region, r)) walls.push_back(std::move(*wall));
+    if (std::optional<TriangleMesh> wall = CappedRegion(mesh, faces_of, region, r))
+      walls.push_back(std::move(*wall));
   }
   if (walls.size() == 2) return walls;
   // No sharp rims: rounded lips. The concave faces are the bore, the convex ones the outer wall
@@ -189,7 +193,8 @@ std::vector<TriangleMesh> CappedWalls(const TriangleMesh& mesh) {
   const std::vector<int> concave = ConcaveRegions(mesh, faces_of);
   walls.clear();
   for (int r = 0; r < 2; ++r)
-    if (std::optional<TriangleMesh> wall = CappedRegion(mesh, faces_of, concave, r)) walls.push_back(std::move(*wall));
+    if (std::optional<TriangleMesh> wall = CappedRegion(mesh, faces_of, concave, r))
+      walls.push_back(std::move(*wall));
   if (walls.size() != 2) walls.clear();
   return walls;
 }

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <map>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 
@@ -518,7 +518,8 @@ void AddLayer(double diameter, int component, bool cavity, MeshTube* outer) {
   }
   outer->layers.push_back(diameter);
   outer->layer_components.push_back(component);
-  if (outer->inner_diameter > 0 && diameter >= 0.9 * outer->inner_diameter) outer->inner_diameter = 0;
+  if (outer->inner_diameter > 0 && diameter >= 0.9 * outer->inner_diameter)
+    outer->inner_diameter = 0;
 }
 
 // A cable drawn as concentric closed surfaces (a coax: conductor, dielectric, jacket, each a
@@ -541,7 +542,8 @@ void MergeConcentricLayers(std::vector<MeshTube>* tubes, const std::vector<char>
           !(inner.diameter < 0.98 * outer.diameter) || !Coaxial(inner, outer))
         continue;
       absorbed[order[ii]] = 1;
-      AddLayer(inner.diameter, inner.component, cavity[static_cast<size_t>(inner.component)], &outer);
+      AddLayer(inner.diameter, inner.component, cavity[static_cast<size_t>(inner.component)],
+               &outer);
       for (size_t k = 0; k < inner.layers.size(); ++k) {
         outer.layers.push_back(inner.layers[k]);
         outer.layer_components.push_back(inner.layer_components[k]);
@@ -599,13 +601,15 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
     const TriangleMesh& m = components[c];
     return (m.vertices.rowwise().maxCoeff() - m.vertices.rowwise().minCoeff()).norm();
   };
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return size_of(a) > size_of(b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return size_of(a) > size_of(b); });
   for (const size_t c : order) {
     const int component = static_cast<int>(c);
     bool layer = false;
     for (const size_t h : order) {
       for (MeshTube& host : tubes_of[h]) {
-        const std::optional<double> diameter = internal::ConcentricLayerDiameter(components[c], host);
+        const std::optional<double> diameter =
+            internal::ConcentricLayerDiameter(components[c], host);
         if (!diameter || !(*diameter < 0.98 * host.diameter)) continue;
         AddLayer(*diameter, component, cavity[c], &host);
         layer = true;
@@ -634,8 +638,9 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
                         " is a short stout solid (%.3g mm long, %.3g mm across, under %g "
                         "diameters): a part, not a cable",
                         1e3 * length, 1e3 * diameter, min_aspect);
-          part_of[c] = MeshPart{component, components[c], "component " + std::to_string(component) + why,
-                                more.front().centreline, diameter};
+          part_of[c] =
+              MeshPart{component, components[c], "component " + std::to_string(component) + why,
+                       more.front().centreline, diameter};
           continue;
         }
       }

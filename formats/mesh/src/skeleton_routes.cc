@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <map>
-#include <utility>
 #include <limits>
+#include <map>
 #include <numeric>
+#include <utility>
 
 namespace cablefit {
 
@@ -62,7 +62,8 @@ std::vector<std::pair<int, int>> WedgePairs(const TriangleMesh& mesh, int a, int
   std::rotate(around.begin(), around.begin() + static_cast<std::ptrdiff_t>(start), around.end());
   for (size_t i = 0; i < n;) {
     size_t j = i + 1;
-    while (j < n && std::abs(std::remainder(around[j].angle - around[j - 1].angle, 2 * M_PI)) <= kSameDirection)
+    while (j < n && std::abs(std::remainder(around[j].angle - around[j - 1].angle, 2 * M_PI)) <=
+                        kSameDirection)
       ++j;
     std::stable_partition(around.begin() + static_cast<std::ptrdiff_t>(i),
                           around.begin() + static_cast<std::ptrdiff_t>(j),

@@ -60,10 +60,12 @@ TriangleMesh WeldNearVertices(const TriangleMesh& mesh) {
   if (kept.size() == static_cast<size_t>(nv)) return mesh;
   TriangleMesh out;
   out.vertices.resize(3, static_cast<Eigen::Index>(kept.size()));
-  for (size_t k = 0; k < kept.size(); ++k) out.vertices.col(static_cast<Eigen::Index>(k)) = mesh.vertices.col(kept[k]);
+  for (size_t k = 0; k < kept.size(); ++k)
+    out.vertices.col(static_cast<Eigen::Index>(k)) = mesh.vertices.col(kept[k]);
   std::vector<Eigen::Vector3i> faces;
   for (Eigen::Index f = 0; f < mesh.faces.cols(); ++f) {
-    const Eigen::Vector3i t(target[static_cast<size_t>(mesh.faces(0, f))], target[static_cast<size_t>(mesh.faces(1, f))],
+    const Eigen::Vector3i t(target[static_cast<size_t>(mesh.faces(0, f))],
+                            target[static_cast<size_t>(mesh.faces(1, f))],
                             target[static_cast<size_t>(mesh.faces(2, f))]);
     if (t(0) != t(1) && t(1) != t(2) && t(0) != t(2)) faces.push_back(t);
   }

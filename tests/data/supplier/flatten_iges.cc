@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   if (reader.ReadFile(argv[1]) != IFSelect_RetDone) return 1;
   reader.TransferRoots();
   IGESControl_Writer writer("MM", 0);
-  for (TopExp_Explorer ex(reader.OneShape(), TopAbs_FACE); ex.More(); ex.Next()) writer.AddShape(ex.Current());
+  for (TopExp_Explorer ex(reader.OneShape(), TopAbs_FACE); ex.More(); ex.Next())
+    writer.AddShape(ex.Current());
   writer.ComputeModel();
   return writer.Write(argv[2]) ? 0 : 1;
 }

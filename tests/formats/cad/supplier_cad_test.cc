@@ -60,10 +60,12 @@ TEST(SupplierCad, StraightPipesWithFlangesOrElbowsArePartsAndAHoseBetweenFlanges
   for (const DrawnCable& c : d.cables) cables.insert(c.name);
   EXPECT_EQ(cables, (std::set<std::string>{"hose", "sensor_cable"}));
   // Every pipe is a part, with the reason; so are the flanges and elbows.
-  EXPECT_TRUE(Says(d, "'pipe_A': a straight tube (60.3 mm across, 1200 mm long) flanged at an end "
-                      "by 'flange_A': a rigid pipe"));
-  EXPECT_TRUE(Says(d, "'pipe_B': a straight tube (60.3 mm across, 900 mm long) joined at an end to "
-                      "the pipe elbow"));
+  EXPECT_TRUE(Says(d,
+                   "'pipe_A': a straight tube (60.3 mm across, 1200 mm long) flanged at an end "
+                   "by 'flange_A': a rigid pipe"));
+  EXPECT_TRUE(Says(d,
+                   "'pipe_B': a straight tube (60.3 mm across, 900 mm long) joined at an end to "
+                   "the pipe elbow"));
   EXPECT_TRUE(Says(d, "'pipe_C': a straight tube"));
   EXPECT_EQ(d.solids.size(), 9u);
 }

@@ -248,7 +248,8 @@ TEST(TubeSweep, AStubShorterThanItsDiameterIsOneTubeNotTwoHalves) {
   stub.ParameteriseByChords();
   const std::string path = (testing::FreshTempDir("sweep_stub") / "stub.step").string();
   WriteRelaxedStep(path, OneCable(stub, d), {RelaxedCable{0, stub, d}});
-  EXPECT_THROW_WITH(ReadCadFile(path), FileError, "(1 other solids); 'swept': a tube 0.8 diameters long");
+  EXPECT_THROW_WITH(ReadCadFile(path), FileError,
+                    "(1 other solids); 'swept': a tube 0.8 diameters long");
 }
 
 }  // namespace

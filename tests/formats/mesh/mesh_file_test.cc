@@ -421,11 +421,13 @@ TEST(MeshFile, AFaceSeamWhoseVerticesDifferByRoundingIsNoCrack) {
   for (Eigen::Index f = 0; f < 2 * (rings - 1) * sides; ++f)
     if (f / (2 * sides) >= seam)
       for (int c = 0; c < 3; ++c)
-        if (tube.faces(c, f) / sides == seam) tube.faces(c, f) = static_cast<int>(nv + tube.faces(c, f) % sides);
+        if (tube.faces(c, f) / sides == seam)
+          tube.faces(c, f) = static_cast<int>(nv + tube.faces(c, f) % sides);
   const MeshContents contents = RecoverMeshContents(tube);
   EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
   ASSERT_EQ(contents.tubes.size(), 1u);
-  EXPECT_NEAR(contents.tubes[0].centreline.ChordLength(), SampleCurve(BentRoute, 4001).ChordLength(), 1e-3);
+  EXPECT_NEAR(contents.tubes[0].centreline.ChordLength(),
+              SampleCurve(BentRoute, 4001).ChordLength(), 1e-3);
 }
 
 // Where a tube ends in a tight bend (11 1/m at the cap), the route's last points (a blend onto

@@ -219,7 +219,8 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   const EndConfig start = cc.start.value_or(EndConfig{});
   const EndConfig end = cc.end.value_or(EndConfig{});
   if (!start.free && !junction_ends.start)
-    candidates.push_back({EndSupport(start, 0.0, route, normals, drawn.start_direction), 3, "start"});
+    candidates.push_back(
+        {EndSupport(start, 0.0, route, normals, drawn.start_direction), 3, "start"});
   if (!end.free && !junction_ends.end)
     candidates.push_back({EndSupport(end, length, route, normals, drawn.end_direction), 3, "end"});
   for (const ExtraSupportConfig& e : cc.supports) {

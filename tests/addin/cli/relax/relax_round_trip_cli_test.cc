@@ -89,7 +89,8 @@ class WriterVersion : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(WriterVersion, RelaxedStepRelaxesToTheCablesItWasWrittenFrom) {
   const std::string commit = GetParam();
-  const fs::path input = testing::SourceDir() / "tests/data/writer_versions" / ("relaxed_" + commit + ".step");
+  const fs::path input =
+      testing::SourceDir() / "tests/data/writer_versions" / ("relaxed_" + commit + ".step");
   // The cables and diameters [m] written (hose_and_stub.txt or wire_and_stub.txt there).
   std::map<std::string, double> written = {
       {"Segment_1", 0.0105767}, {"Segment_2", 0.0105969}, {"Segment_13", 0.0100479}};
