@@ -48,32 +48,47 @@ struct Wall {
   double area = 0.0;
 };
 
+// A planar face: the centroid of its area and its vertices [OCCT unit].
+struct Plane {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> vertices;
+};
+
 struct Face {
   TopoDS_Shape shape;
   int style = 0;
-  std::optional<Wall> wall;  // a tube's lateral face
+  std::optional<Wall> wall;    // a tube's lateral face
+  std::optional<Plane> plane;  // a planar face
   double area = 0.0;
 };
 
-double Area(const TopoDS_Shape& face) {
+Face MakeFace(const TopoDS_Shape& shape, int style) {
   GProp_GProps props;
-  BRepGProp::SurfaceProperties(face, props);
-  return props.Mass();
+  BRepGProp::SurfaceProperties(shape, props);
+  Face face{shape, style, std::nullopt, std::nullopt, props.Mass()};
+  const TopoDS_Face& f = TopoDS::Face(shape);
+  if (BRepAdaptor_Surface(f).GetType() == GeomAbs_Plane) {
+    Plane plane;
+    const gp_Pnt c = props.CentreOfMass();
+    plane.centroid = Eigen::Vector3d(c.X(), c.Y(), c.Z());
+    for (TopExp_Explorer ex(f, TopAbs_VERTEX); ex.More(); ex.Next()) {
+      const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(ex.Current()));
+      plane.vertices.emplace_back(p.X(), p.Y(), p.Z());
+    }
+    face.plane = std::move(plane);
+  } else if (const std::optional<TubeFaceEnds> ends = LateralFaceEnds(f)) {
+    face.wall = Wall{*ends, face.area};
+  }
+  return face;
 }
 
-// Whether planar `face` closes the end of `wall` at `centre`: its area's centroid there and no
-// point of its boundary farther out than the wall (a disc, or an annulus around a bore).
-bool IsCapAt(const TopoDS_Shape& face, const Eigen::Vector3d& centre, double radius) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(face, props);
-  const gp_Pnt c = props.CentreOfMass();
-  if ((Eigen::Vector3d(c.X(), c.Y(), c.Z()) - centre).norm() > kSamePoint * radius) return false;
-  for (TopExp_Explorer ex(face, TopAbs_VERTEX); ex.More(); ex.Next()) {
-    const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(ex.Current()));
-    if ((Eigen::Vector3d(p.X(), p.Y(), p.Z()) - centre).norm() > (1 + kSamePoint) * radius)
-      return false;
-  }
-  return true;
+// Whether `plane` closes the end of a wall of `radius` at `centre`: its area's centroid there and
+// no point of its boundary farther out than the wall (a disc, or an annulus around a bore).
+bool IsCapAt(const Plane& plane, const Eigen::Vector3d& centre, double radius) {
+  if ((plane.centroid - centre).norm() > kSamePoint * radius) return false;
+  return std::all_of(plane.vertices.begin(), plane.vertices.end(), [&](const Eigen::Vector3d& p) {
+    return (p - centre).norm() <= (1 + kSamePoint) * radius;
+  });
 }
 
 class UnionFind {
@@ -145,10 +160,10 @@ std::vector<int> TubeGroups(const std::vector<Face>& faces) {
   // Caps: planar faces centred on a wall's end.
   for (int i = 0; i < n; ++i) {
     const Face& f = faces[static_cast<size_t>(i)];
-    if (f.wall || BRepAdaptor_Surface(TopoDS::Face(f.shape)).GetType() != GeomAbs_Plane) continue;
+    if (!f.plane) continue;
     for (const int j : walls) {
-      if (IsCapAt(f.shape, wall(j).start, wall(j).radius) ||
-          IsCapAt(f.shape, wall(j).end, wall(j).radius)) {
+      if (IsCapAt(*f.plane, wall(j).start, wall(j).radius) ||
+          IsCapAt(*f.plane, wall(j).end, wall(j).radius)) {
         group_of[static_cast<size_t>(i)] = group_of[static_cast<size_t>(j)];
         break;
       }
@@ -192,11 +207,8 @@ std::vector<LooseBody> LooseFaceBodies(const std::vector<LooseFaceGroup>& groups
   for (const auto& [shell, style] : sewn) {
     std::vector<int> members;
     for (TopExp_Explorer ex(shell, TopAbs_FACE); ex.More(); ex.Next()) {
-      Face face{ex.Current(), style, std::nullopt, Area(ex.Current())};
-      if (const std::optional<TubeFaceEnds> ends = LateralFaceEnds(TopoDS::Face(ex.Current())))
-        face.wall = Wall{*ends, face.area};
       members.push_back(static_cast<int>(faces.size()));
-      faces.push_back(std::move(face));
+      faces.push_back(MakeFace(ex.Current(), style));
     }
     shells.push_back(std::move(members));
   }
