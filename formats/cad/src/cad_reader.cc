@@ -1,7 +1,6 @@
 // ReadCadFile: STEP/IGES through XDE, assembly walked with names and colours; curves and tube
 // solids become cables, everything else is kept as solids.
 #include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -12,8 +11,8 @@
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
-#include <TCollection_HAsciiString.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -21,25 +20,28 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
-#include <map>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
+#include "breakout_branches.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/cad_file.h"
-#include "cad_shape_handle.h"
 #include "cad_read_in_process.h"
-#include "breakout_branches.h"
+#include "cad_shape_handle.h"
 #include "core_tails.h"
 #include "crash_probe.h"
 #include "curve_pieces.h"
+#include "curve_routes.h"
 #include "drawn_sweeps.h"
 #include "flat_cores.h"
 #include "flat_recovery.h"
-#include "curve_routes.h"
+#include "loose_faces.h"
 #include "occt_session.h"
+#include "rigid_pipes.h"
+#include "tube_pieces.h"
 #include "tube_recovery.h"
 #include "xde_document.h"
 
@@ -106,24 +108,6 @@ double ChainLength(const Eigen::Matrix3Xd& points) {  // 3 x n, any unit
   return length;
 }
 
-// Sews loose faces into shells, one body per connected shell (a face that joins nothing stays
-// a body of its own). Tolerance 0.01 mm: the precision CAD exporters write surfaces to, far
-// below the size of any cable, so only edges that were drawn as one are joined.
-std::vector<TopoDS_Shape> SewFaces(const std::vector<TopoDS_Shape>& faces) {
-  std::vector<TopoDS_Shape> bodies;
-  if (faces.empty()) return bodies;
-  BRepBuilderAPI_Sewing sewing(0.01);  // [OCCT unit = mm]
-  for (const TopoDS_Shape& f : faces) sewing.Add(f);
-  sewing.Perform();
-  const TopoDS_Shape sewn = sewing.SewedShape();
-  if (sewn.IsNull()) return faces;
-  for (TopExp_Explorer ex(sewn, TopAbs_SHELL); ex.More(); ex.Next()) bodies.push_back(ex.Current());
-  for (TopExp_Explorer ex(sewn, TopAbs_FACE, TopAbs_SHELL); ex.More(); ex.Next()) {
-    bodies.push_back(ex.Current());
-  }
-  return bodies;
-}
-
 // Names that STEP/IGES exporters write when the user gave none: treated as no name, so that
 // such cables get distinct names from their position instead of one shared placeholder.
 bool IsPlaceholderName(const std::string& name) {
@@ -153,6 +137,7 @@ class DrawingBuilder {
     for (TDF_LabelSequence::Iterator it(roots); it.More(); it.Next()) {
       Walk(it.Value(), TopLoc_Location(), "", std::nullopt);
     }
+    AddLooseBodies();
   }
 
  private:
@@ -212,7 +197,6 @@ class DrawingBuilder {
   void AddShape(const TDF_Label& label, const TopoDS_Shape& shape, const std::string& name,
                 const std::optional<SrgbColor>& color) {
     const Style style{name, color};
-    std::vector<DrawnCable> cables;
     const std::vector<CurveRoute> routes =
         ExtractCurveRoutes(shape, options_.sample_spacing / kMetresPerOcctUnit,
                            std::max(options_.junction_tolerance / kMetresPerOcctUnit, 1e-6));
@@ -229,7 +213,7 @@ class DrawingBuilder {
       cable.source = CableSourceKind::kCurve;
       cable.fit_error = route.max_chord_error * kMetresPerOcctUnit;
       SetColor(&cable, style.color);
-      cables.push_back(std::move(cable));
+      drawing_->cables.push_back(std::move(cable));
     }
     // Solids, then shells that bound no solid (a tube drawn as a surface).
     std::vector<TopoDS_Shape> bodies;
@@ -237,13 +221,12 @@ class DrawingBuilder {
     for (TopExp_Explorer ex(shape, TopAbs_SHELL, TopAbs_SOLID); ex.More(); ex.Next()) {
       bodies.push_back(ex.Current());
     }
-    // Loose faces (IGES surface models: a tube drawn as two half-surfaces) are sewn into shells.
-    std::vector<TopoDS_Shape> loose;
-    for (TopExp_Explorer ex(shape, TopAbs_FACE, TopAbs_SHELL); ex.More(); ex.Next()) {
-      loose.push_back(ex.Current());
-    }
-    for (TopoDS_Shape& sewn : SewFaces(loose)) bodies.push_back(std::move(sewn));
-    if (routes.empty() && bodies.empty()) {
+    // Loose faces (IGES surface models: a tube drawn as two half-surfaces) become bodies once the
+    // whole file is read (LooseFaceBodies): the faces of one tube may come in several labels.
+    const size_t loose_before = loose_.size();
+    internal::CollectLooseFaces(shape, static_cast<int>(loose_styles_.size()), &loose_);
+    if (loose_.size() > loose_before) loose_styles_.push_back(style);
+    if (routes.empty() && bodies.empty() && loose_.size() == loose_before) {
       // Edges of zero length and lone points make no route; a product drawn only with them would
       // otherwise vanish from the output without a word.
       const bool has_points = TopExp_Explorer(shape, TopAbs_EDGE, TopAbs_FACE).More() ||
@@ -254,70 +237,111 @@ class DrawingBuilder {
             "': drawn as a point or a curve of zero length, not a cable");
       }
     }
+    std::vector<Style> styles;
+    std::vector<internal::TubePiece> pieces;
+    for (const TopoDS_Shape& body : bodies) {
+      pieces.push_back({body, RecoverTube(body, TubeOptions()), static_cast<int>(styles.size())});
+      styles.push_back(bodies.size() > 1 ? SubStyle(label, body, style) : style);
+    }
+    internal::JoinTubePieces(&pieces);
+    for (internal::TubePiece& piece : pieces)
+      AddBody(piece.shape, styles[static_cast<size_t>(piece.style)], std::move(piece.tube));
+  }
+
+  // The bodies drawn as loose faces, after the walk.
+  void AddLooseBodies() {
+    for (const internal::LooseBody& body : internal::LooseFaceBodies(loose_))
+      AddBody(body.shape, loose_styles_[static_cast<size_t>(body.style)],
+              RecoverTube(body.shape, TubeOptions()));
+  }
+
+  TubeRecoveryOptions TubeOptions() const {
     TubeRecoveryOptions tube_options;
     tube_options.sample_spacing = options_.sample_spacing / kMetresPerOcctUnit;
     tube_options.min_area_fraction = options_.min_tube_area_fraction;
-    tube_options.min_aspect = 0;  // slenderness is checked below, to say why a tube is no cable
-    for (const TopoDS_Shape& body : bodies) {
-      const Style body_style = bodies.size() > 1 ? SubStyle(label, body, style) : style;
-      std::optional<RecoveredTube> tube = RecoverTube(body, tube_options);
-      internal::DrawnTube record;
-      if (tube) {
-        record.centres = tube->centres * kMetresPerOcctUnit;
-        record.radius = tube->radius * kMetresPerOcctUnit;
-        record.inner_radius = tube->inner_radius * kMetresPerOcctUnit;
-        record.fit_error = tube->rms_residual * kMetresPerOcctUnit;
-        const double length = ChainLength(tube->centres);
-        const double slenderness = length / (2 * tube->radius);
-        if (slenderness < options_.min_tube_aspect) {
-          record.skipped_note = static_cast<int>(drawing_->skipped.size());
-          char line[200];
-          std::snprintf(line, sizeof line,
-                        "a tube %.1f diameters long (%.4g mm across), less than the %.4g of a "
-                        "slender cable: kept as a solid part",
-                        slenderness, 2 * tube->radius, options_.min_tube_aspect);
-          drawing_->skipped.push_back(
-              "'" + (body_style.name.empty() ? std::string("unnamed") : body_style.name) + "': " + line);
-          tube.reset();
-        }
-      }
-      if (!tube && record.centres.cols() == 0) {
-        if (std::optional<DrawnCable> flat = FlatCable(body, body_style)) {
-          cables.push_back(std::move(*flat));
-          continue;
-        }
-      }
-      if (tube) {
-        DrawnCable cable;
-        cable.name = body_style.name;
-        cable.centreline = ToPolyline(tube->centres);
-        cable.diameter = 2 * tube->radius * kMetresPerOcctUnit;
-        cable.inner_diameter = 2 * tube->inner_radius * kMetresPerOcctUnit;
-        cable.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
-        cable.source = CableSourceKind::kTube;
-        cable.fit_error = tube->rms_residual * kMetresPerOcctUnit;
-        SetColor(&cable, body_style.color);
-        record.is_cable = true;
-        record.index = static_cast<int>(drawing_->cables.size() + cables.size());
-        tubes_->push_back(std::move(record));
-        cables.push_back(std::move(cable));
-      } else {
-        DrawnSolid solid;
-        solid.name = body_style.name;
-        if (body_style.color) {
-          solid.has_color = true;
-          solid.color = *body_style.color;
-        }
-        solid.mesh = Tessellate(body, options_.mesh_relative_deflection);
-        solid.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
-        if (record.centres.cols() > 0) {
-          record.index = static_cast<int>(drawing_->solids.size());
-          tubes_->push_back(std::move(record));
-        }
-        drawing_->solids.push_back(std::move(solid));
+    // Slenderness is checked by AddBody, to say why a tube is no cable.
+    tube_options.min_aspect = 0;
+    return tube_options;
+  }
+
+  // One body and the tube it is, if it is one: a cable when slender, else a flat cable or a
+  // solid part.
+  void AddBody(const TopoDS_Shape& body, const Style& body_style,
+               std::optional<RecoveredTube> tube) {
+    // A stout "tube" may be a slender flat strip whose long faces are round along the route (a
+    // strip bent edgewise is a piece of a cylinder as wide as the strip): the strip's matched end
+    // faces say which it is.
+    if (tube && ChainLength(tube->centres) < options_.min_tube_aspect * 2 * tube->radius) {
+      if (std::optional<DrawnCable> flat = FlatCable(body, body_style)) {
+        drawing_->cables.push_back(std::move(*flat));
+        return;
       }
     }
-    for (auto& c : cables) drawing_->cables.push_back(std::move(c));
+    internal::DrawnTube record;
+    if (tube) {
+      record.centres = tube->centres * kMetresPerOcctUnit;
+      record.radius = tube->radius * kMetresPerOcctUnit;
+      record.inner_radius = tube->inner_radius * kMetresPerOcctUnit;
+      record.fit_error = tube->rms_residual * kMetresPerOcctUnit;
+      const double length = ChainLength(tube->centres);
+      const double slenderness = length / (2 * tube->radius);
+      if (slenderness < options_.min_tube_aspect) {
+        record.skipped_note = static_cast<int>(drawing_->skipped.size());
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "a tube %.1f diameters long (%.4g mm across), less than the %.4g of a "
+                      "slender cable: kept as a solid part",
+                      slenderness, 2 * tube->radius, options_.min_tube_aspect);
+        drawing_->skipped.push_back(
+            "'" + (body_style.name.empty() ? std::string("unnamed") : body_style.name) +
+            "': " + line);
+        tube.reset();
+      }
+    } else if (std::optional<DrawnCable> flat = FlatCable(body, body_style)) {
+      drawing_->cables.push_back(std::move(*flat));
+      return;
+    }
+    if (tube) {
+      // A sweep approximated loosely (an early cablefit STEP writer's, ringing) is read at the
+      // diameter most of it has; say that it is not one diameter throughout.
+      if (tube->max_section_radius - tube->min_section_radius > 0.02 * tube->radius) {
+        char line[240];
+        std::snprintf(line, sizeof line,
+                      "'%s': its cross-sections stray from %.4g mm across (%.4g to %.4g mm), a "
+                      "loosely approximated sweep: read as a tube of %.4g mm",
+                      body_style.name.empty() ? "unnamed" : body_style.name.c_str(),
+                      2 * tube->radius, 2 * tube->min_section_radius, 2 * tube->max_section_radius,
+                      2 * tube->radius);
+        drawing_->warnings.push_back(line);
+      }
+      DrawnCable cable;
+      cable.name = body_style.name;
+      cable.centreline = ToPolyline(tube->centres);
+      cable.diameter = 2 * tube->radius * kMetresPerOcctUnit;
+      cable.inner_diameter = 2 * tube->inner_radius * kMetresPerOcctUnit;
+      cable.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
+      cable.source = CableSourceKind::kTube;
+      cable.fit_error = tube->rms_residual * kMetresPerOcctUnit;
+      SetColor(&cable, body_style.color);
+      record.is_cable = true;
+      record.index = static_cast<int>(drawing_->cables.size());
+      tubes_->push_back(std::move(record));
+      drawing_->cables.push_back(std::move(cable));
+      return;
+    }
+    DrawnSolid solid;
+    solid.name = body_style.name;
+    if (body_style.color) {
+      solid.has_color = true;
+      solid.color = *body_style.color;
+    }
+    solid.mesh = Tessellate(body, options_.mesh_relative_deflection);
+    solid.shape = std::make_shared<const CadShapeHandle>(CadShapeHandle{body});
+    if (record.centres.cols() > 0) {
+      record.index = static_cast<int>(drawing_->solids.size());
+      tubes_->push_back(std::move(record));
+    }
+    drawing_->solids.push_back(std::move(solid));
   }
 
   // A flat (ribbon) cable, or nullopt when `body` is no slender flat strip.
@@ -356,6 +380,8 @@ class DrawingBuilder {
   const CadReadOptions& options_;
   HarnessDrawing* drawing_;
   std::vector<internal::DrawnTube>* tubes_;  // every tube recovered, cable or solid part
+  std::vector<internal::LooseFaceGroup> loose_;  // the loose faces of every label
+  std::vector<Style> loose_styles_;              // their labels' styles
 };
 
 // Distance from `p` to the segment a-b.
@@ -387,8 +413,9 @@ void DemoteDucts(HarnessDrawing* drawing, double relative_deflection) {
       const Eigen::Matrix3Xd& p = cables[j].centreline.points;
       for (Eigen::Index k = 0; k < p.cols(); ++k) {
         const Vec3 q = p.col(k);
+        // Through the bore, not only touching its end (a pipe elbow welded to it).
         const double along = (q - a).dot((b - a).normalized());
-        if (along > 0 && along < (b - a).norm() && SegmentDistance(q, a, b) < bore) {
+        if (along > bore && along < (b - a).norm() - bore && SegmentDistance(q, a, b) < bore) {
           duct[i] = true;
           break;
         }
@@ -447,6 +474,26 @@ void DemoteStubs(const CadReadOptions& options, internal::AbsorbedTubes* absorbe
     self.is_cable = true;
     self.index = static_cast<int>(c);
     absorbed->Mark(self, "'" + name + "': " + line, drawing);
+  }
+}
+
+// Straight hollow tubes fitted with flanges or pipe elbows are rigid pipes (FindRigidPipes): solid
+// parts, like the fittings they are drawn with.
+void DemoteRigidPipes(const CadReadOptions& options, internal::AbsorbedTubes* absorbed,
+                      HarnessDrawing* drawing, const std::vector<internal::DrawnTube>& tubes) {
+  for (const internal::RigidPipe& pipe : internal::FindRigidPipes(tubes, *absorbed, *drawing)) {
+    const DrawnCable& cable = drawing->cables[static_cast<size_t>(pipe.cable)];
+    DrawnSolid solid;
+    solid.name = cable.name;
+    solid.has_color = cable.has_color;
+    solid.color = cable.color;
+    solid.mesh = Tessellate(cable.shape->shape, options.mesh_relative_deflection);
+    solid.shape = cable.shape;
+    drawing->solids.push_back(std::move(solid));
+    internal::DrawnTube self;
+    self.is_cable = true;
+    self.index = pipe.cable;
+    absorbed->Mark(self, pipe.why, drawing);
   }
 }
 
@@ -560,6 +607,7 @@ HarnessDrawing ReadCadFileInThisProcess(const std::string& path, const CadReadOp
     MergeCoresIntoFlatJackets(tubes, &drawing, &absorbed);
     MergeCoreTails(tubes, options.min_tube_aspect, options.junction_tolerance, &drawing, &absorbed);
     DemoteStubs(options, &absorbed, &drawing);
+    DemoteRigidPipes(options, &absorbed, &drawing, tubes);
     KeepBreakoutBranches(tubes, options.junction_tolerance, &absorbed, &drawing);
     absorbed.RemoveFrom(&drawing);
   } catch (const Standard_Failure& e) {

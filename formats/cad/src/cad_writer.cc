@@ -175,9 +175,13 @@ void WriteRelaxedStep(const std::string& path, const HarnessDrawing& input,
         mine.push_back(std::move(sweep));
       };
       const Eigen::Index m = rows.cols();
-      if (m >= 4 && (rows.block<3, 1>(0, m - 1) - rows.block<3, 1>(0, 0)).norm() <
-                        diameter / kMetresPerOcctUnit) {
-        // A closed loop: a spline through coinciding ends cannot be swept, two halves can.
+      const double gap = (rows.block<3, 1>(0, m - 1) - rows.block<3, 1>(0, 0)).norm();  // [mm]
+      // A closed loop: a spline through coinciding ends cannot be swept, two halves can. Ends
+      // closer than the diameter on a cable many gaps long are a loop; a stub shorter than its
+      // diameter (a segment between two nodes of a harness network) is not, and written as one
+      // tube it reads back as one.
+      if (m >= 4 && gap < diameter / kMetresPerOcctUnit &&
+          gap < 0.1 * length / kMetresPerOcctUnit) {
         add(rows.leftCols(m / 2 + 1));
         add(rows.rightCols(m - m / 2));
       } else {

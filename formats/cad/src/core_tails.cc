@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace cablefit::internal {
@@ -70,6 +71,21 @@ int CableEndsAt(const std::vector<DrawnCable>& cables, const Vec3& p, double tol
     count += (q.col(0) - p).norm() <= tolerance || (q.col(q.cols() - 1) - p).norm() <= tolerance;
   }
   return count;
+}
+
+// Whether a cable other than `tube` ends at `tip` without also ending at `root`: a cable that
+// spans the same stretch is the tube drawn once more (a core's route curve beside its sweep).
+bool OtherCableEndsAt(const std::vector<DrawnCable>& cables, const Vec3& tip, const Vec3& root,
+                      double tolerance, const DrawnTube& tube) {
+  for (size_t c = 0; c < cables.size(); ++c) {
+    const Eigen::Matrix3Xd& q = cables[c].centreline.points;
+    if (q.cols() < 2 || (tube.is_cable && static_cast<size_t>(tube.index) == c)) continue;
+    const Vec3 a = q.col(0), b = q.col(q.cols() - 1);
+    const bool at_tip = (a - tip).norm() <= tolerance || (b - tip).norm() <= tolerance;
+    const bool at_root = (a - root).norm() <= tolerance || (b - root).norm() <= tolerance;
+    if (at_tip && !at_root) return true;
+  }
+  return false;
 }
 
 double ChainLength(const Eigen::Matrix3Xd& points) {
@@ -150,8 +166,20 @@ void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
     curve.inner_radius = 0.5 * cables[c].inner_diameter;
     candidates.push_back(std::move(curve));
   }
-  for (const DrawnTube& tube : candidates) {
-    if (absorbed->Marked(tube)) continue;
+  // Each candidate's cable and end, if it is a tail of one.
+  struct Tail {
+    size_t candidate = 0, cable = 0;
+    bool at_start = true;
+  };
+  std::vector<Tail> found;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const DrawnTube& tube = candidates[k];
+    // A cable is a candidate as its tube and as a curve: once.
+    const bool seen = std::any_of(found.begin(), found.end(), [&](const Tail& t) {
+      const DrawnTube& o = candidates[t.candidate];
+      return o.is_cable == tube.is_cable && o.index == tube.index;
+    });
+    if (absorbed->Marked(tube) || seen) continue;
     const double length = ChainLength(tube.centres);
     const Vec3 first = tube.centres.col(0), last = tube.centres.col(tube.centres.cols() - 1);
     for (size_t c = 0; c < cables.size(); ++c) {
@@ -165,24 +193,39 @@ void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
       if (!(length < min_aspect * cable.diameter)) continue;
       // Shorter than the cable it would belong to: two tails side by side are not each other's.
       if (!(length < ChainLength(cable.centreline.points))) continue;
-      bool tail = false;
+      std::optional<bool> tail_at_start;
       for (const bool at_start : {true, false}) {
         const CableEnd end = EndOf(cable, at_start);
         for (const bool root_first : {true, false}) {
           const Vec3& root = root_first ? first : last;
           const Vec3& tip = root_first ? last : first;
           // It runs out of the cable: its far end is clear of the end face by its diameter (a
-          // tail may bend sideways right after the jacket).
-          tail = tail || (InEndSection(cable, end, root, tube.radius) &&
-                          (tip - end.point).dot(end.out) > std::max(2 * tube.radius, 0.1 * length) &&
-                          CableEndsAt(cables, root, junction_tolerance, tube) < 2);
+          // tail may bend sideways right after the jacket), and free: a thinner tube whose far
+          // end meets another cable's is a segment of a network (a bundle thinning at a splice
+          // and running on to the next node), not a core end.
+          if (InEndSection(cable, end, root, tube.radius) &&
+              (tip - end.point).dot(end.out) > std::max(2 * tube.radius, 0.1 * length) &&
+              CableEndsAt(cables, root, junction_tolerance, tube) < 2 &&
+              !OtherCableEndsAt(cables, tip, root, junction_tolerance, tube))
+            tail_at_start = at_start;
         }
       }
-      if (!tail) continue;
-      absorbed->Mark(tube, TailLine(tube, NameOf(tube, *drawing), cable.name), drawing,
-                     static_cast<int>(c));
+      if (!tail_at_start) continue;
+      found.push_back({k, c, *tail_at_start});
       break;
     }
+  }
+  // A lone thin tube at a cable's end that is slender on its own is a cable continuing it as a
+  // thinner one (a harness's leaf segment beyond a splice); alone and short, it is a wire's bare
+  // conductor end, and beside other tails, a multi-core cable's stripped cores however long.
+  for (const Tail& t : found) {
+    const DrawnTube& tube = candidates[t.candidate];
+    const int beside = static_cast<int>(std::count_if(found.begin(), found.end(), [&](const Tail& o) {
+      return o.cable == t.cable && o.at_start == t.at_start;
+    }));
+    if (beside == 1 && ChainLength(tube.centres) >= min_aspect * 2 * tube.radius) continue;
+    absorbed->Mark(tube, TailLine(tube, NameOf(tube, *drawing), cables[t.cable].name), drawing,
+                   static_cast<int>(t.cable));
   }
   for (size_t c = 0; c < cables.size(); ++c) {
     const DrawnCable& parent = cables[c];

@@ -14,7 +14,11 @@ namespace cablefit::internal {
 /// and runs out of it, and is shorter than `min_aspect` of that cable's diameters (a branch of a
 /// harness is longer), is marked in `absorbed` as part of the cable, with a line in `skipped`.
 /// A tube whose root meets the ends of two other cables (within `junction_tolerance` [m]) is a
-/// branch of their breakout (a thin wire leaving a harness node), not a core end.
+/// branch of their breakout (a thin wire leaving a harness node), and one whose far end meets
+/// another cable's end is a segment of a network (a bundle thinning at a splice): no core ends.
+/// Alone at a cable's end (no other tail beside it) a tube is a core end only when it is not
+/// slender on its own (`min_aspect` of its own diameters): a wire's bare conductor, not a leaf
+/// segment continuing the cable thinner.
 void MergeCoreTails(const std::vector<DrawnTube>& tubes, double min_aspect,
                     double junction_tolerance, HarnessDrawing* drawing, AbsorbedTubes* absorbed);
 

@@ -9,17 +9,19 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <map>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <optional>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/internal/tube_slices.h"
 #include "cablefit/formats/mesh_file.h"
+#include "concentric_layers.h"
 #include "hollow_tubes.h"
 #include "mcf_skeleton.h"
 #include "skeleton_routes.h"
+#include "vertex_weld.h"
 
 namespace cablefit {
 namespace {
@@ -403,21 +405,31 @@ std::vector<MeshTube> TubesOfComponent(const TriangleMesh& mesh, int component) 
         pts = WithoutFoldBacks(pts);
         const int n = static_cast<int>(pts.size());
         // Carry free ends out to the caps, where the skeleton stops short.
+        std::optional<Vec3> front_out, back_out;  // a flat cap's outward normal at each end
         if (route.start_is_end) {
           const Vec3 out = (pts[0] - pts[std::min(4, n - 1)]).normalized();
-          EndAtCap(CapEnd(mesh, pts[0], out, radius), radius, /*front=*/true, &pts);
+          const TubeEnd cap = CapEnd(mesh, pts[0], out, radius);
+          front_out = cap.normal;
+          EndAtCap(cap, radius, /*front=*/true, &pts);
         }
         if (route.finish_is_end) {
           const int m = static_cast<int>(pts.size());
           const Vec3 out = (pts[m - 1] - pts[std::max(0, m - 5)]).normalized();
-          EndAtCap(CapEnd(mesh, pts[m - 1], out, radius), radius, /*front=*/false, &pts);
+          const TubeEnd cap = CapEnd(mesh, pts[m - 1], out, radius);
+          back_out = cap.normal;
+          EndAtCap(cap, radius, /*front=*/false, &pts);
         }
         MeshTube tube;
         tube.component = component;
         tube.diameter = 2 * radius;
         tube.fit_error = std::sqrt(std::accumulate(residuals.begin(), residuals.end(), 0.0) /
                                    static_cast<double>(residuals.size()));
-        if (CanonicalBefore(pts.back(), pts.front(), 0.1 * r0)) std::reverse(pts.begin(), pts.end());
+        if (CanonicalBefore(pts.back(), pts.front(), 0.1 * r0)) {
+          std::reverse(pts.begin(), pts.end());
+          std::swap(front_out, back_out);
+        }
+        if (front_out) tube.start_direction = -*front_out;
+        if (back_out) tube.end_direction = *back_out;
         tube.centreline.points.resize(3, static_cast<Eigen::Index>(pts.size()));
         for (size_t i = 0; i < pts.size(); ++i) tube.centreline.points.col(static_cast<Eigen::Index>(i)) = pts[i];
         tube.centreline.ParameteriseByChords(0.0);
@@ -496,6 +508,20 @@ bool Coaxial(const MeshTube& inner, const MeshTube& outer) {
   return true;
 }
 
+// Component `component` of `diameter` [m] drawn inside `outer` around its axis: its layer. A
+// surface facing inwards bounds the hollow (the bore of a hose drawn as two shells); a layer that
+// fits the bore fills it.
+void AddLayer(double diameter, int component, bool cavity, MeshTube* outer) {
+  if (cavity) {
+    if (outer->inner_diameter == 0) outer->inner_diameter = diameter;
+    return;
+  }
+  outer->layers.push_back(diameter);
+  outer->layer_components.push_back(component);
+  if (outer->inner_diameter > 0 && diameter >= 0.9 * outer->inner_diameter)
+    outer->inner_diameter = 0;
+}
+
 // A cable drawn as concentric closed surfaces (a coax: conductor, dielectric, jacket, each a
 // shell of its own) is one cable of the outer diameter: each tube lying along the axis of a
 // wider one of another component, within it, is that tube's layer. Its bore, if it has one,
@@ -516,19 +542,12 @@ void MergeConcentricLayers(std::vector<MeshTube>* tubes, const std::vector<char>
           !(inner.diameter < 0.98 * outer.diameter) || !Coaxial(inner, outer))
         continue;
       absorbed[order[ii]] = 1;
-      // A surface facing inwards bounds the hollow: the bore of a hose drawn as two shells.
-      if (cavity[static_cast<size_t>(inner.component)]) {
-        if (outer.inner_diameter == 0) outer.inner_diameter = inner.diameter;
-        continue;
-      }
-      outer.layers.push_back(inner.diameter);
-      outer.layer_components.push_back(inner.component);
+      AddLayer(inner.diameter, inner.component, cavity[static_cast<size_t>(inner.component)],
+               &outer);
       for (size_t k = 0; k < inner.layers.size(); ++k) {
         outer.layers.push_back(inner.layers[k]);
         outer.layer_components.push_back(inner.layer_components[k]);
       }
-      if (outer.inner_diameter > 0 && inner.diameter >= 0.9 * outer.inner_diameter)
-        outer.inner_diameter = 0;  // the bore is filled
     }
   }
   std::vector<MeshTube> kept;
@@ -563,10 +582,51 @@ TriangleMesh WithoutDoubledFaces(const TriangleMesh& mesh) {
 }
 
 MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
-  MeshContents out;
-  const std::vector<TriangleMesh> components = ConnectedComponents(WithoutDoubledFaces(mesh));
-  for (size_t c = 0; c < components.size(); ++c) {
+  // Touching solids meshed one by one: where their tessellations of the surface they share agree
+  // (every face doubled), they are the one closed surface around them all; where they do not, each
+  // is its own closed surface, and ConnectedComponents tells them apart at their common rims.
+  const TriangleMesh welded = internal::WeldNearVertices(mesh);
+  TriangleMesh around = WithoutDoubledFaces(welded);
+  if (!IsClosedSurface(around)) around = welded;
+  const std::vector<TriangleMesh> components = ConnectedComponents(around);
+  std::vector<char> cavity(components.size());
+  for (size_t c = 0; c < components.size(); ++c) cavity[c] = SignedVolume(components[c]) < 0;
+  // Per component: its tubes, or the part it is. The widest first, so that a layer drawn inside
+  // a tube already read is known as one without a skeleton of its own.
+  std::vector<std::vector<MeshTube>> tubes_of(components.size());
+  std::vector<std::optional<MeshPart>> part_of(components.size());
+  std::vector<size_t> order(components.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto size_of = [&](size_t c) {
+    const TriangleMesh& m = components[c];
+    return (m.vertices.rowwise().maxCoeff() - m.vertices.rowwise().minCoeff()).norm();
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return size_of(a) > size_of(b); });
+  for (const size_t c : order) {
     const int component = static_cast<int>(c);
+    bool layer = false;
+    for (const size_t h : order) {
+      for (MeshTube& host : tubes_of[h]) {
+        const std::optional<double> diameter =
+            internal::ConcentricLayerDiameter(components[c], host);
+        if (!diameter || !(*diameter < 0.98 * host.diameter)) continue;
+        AddLayer(*diameter, component, cavity[c], &host);
+        layer = true;
+        break;
+      }
+      if (layer) break;
+    }
+    if (layer) continue;
+    // A surface with a hole through it (a hose, a conduit): its own skeleton is a loop through the
+    // wall, no route; its walls are read instead, without the skeleton it would cost first.
+    if (internal::EulerCharacteristic(components[c]) == 0 && IsClosedSurface(components[c])) {
+      if (std::optional<MeshTube> hollow = HollowTube(components[c], component);
+          hollow && hollow->centreline.ChordLength() >= min_aspect * hollow->diameter) {
+        tubes_of[c].push_back(std::move(*hollow));
+        continue;
+      }
+    }
     try {
       std::vector<MeshTube> more = TubesOfComponent(components[c], component);
       if (more.size() == 1) {
@@ -578,24 +638,27 @@ MeshContents RecoverMeshContents(const TriangleMesh& mesh, double min_aspect) {
                         " is a short stout solid (%.3g mm long, %.3g mm across, under %g "
                         "diameters): a part, not a cable",
                         1e3 * length, 1e3 * diameter, min_aspect);
-          out.parts.push_back({component, components[c],
-                               "component " + std::to_string(component) + why,
-                               more.front().centreline, diameter});
+          part_of[c] =
+              MeshPart{component, components[c], "component " + std::to_string(component) + why,
+                       more.front().centreline, diameter};
           continue;
         }
       }
-      for (auto& t : more) out.tubes.push_back(std::move(t));
+      tubes_of[c] = std::move(more);
     } catch (const InvalidInput& e) {
       if (std::optional<MeshTube> hollow = HollowTube(components[c], component);
           hollow && hollow->centreline.ChordLength() >= min_aspect * hollow->diameter) {
-        out.tubes.push_back(std::move(*hollow));
+        tubes_of[c].push_back(std::move(*hollow));
       } else {
-        out.parts.push_back({component, components[c], e.what(), {}, 0.0});
+        part_of[c] = MeshPart{component, components[c], e.what(), {}, 0.0};
       }
     }
   }
-  std::vector<char> cavity(components.size());
-  for (size_t c = 0; c < components.size(); ++c) cavity[c] = SignedVolume(components[c]) < 0;
+  MeshContents out;
+  for (size_t c = 0; c < components.size(); ++c) {
+    for (MeshTube& t : tubes_of[c]) out.tubes.push_back(std::move(t));
+    if (part_of[c]) out.parts.push_back(std::move(*part_of[c]));
+  }
   MergeConcentricLayers(&out.tubes, cavity);
   return out;
 }

@@ -8,7 +8,8 @@
 
 namespace cablefit {
 
-/// The connected components of `mesh` (faces sharing vertices), each re-indexed.
+/// The connected components of `mesh` (faces sharing edges; around an edge of more than two
+/// faces, the faces bounding one solid), each re-indexed.
 std::vector<TriangleMesh> ConnectedComponents(const TriangleMesh& mesh);
 
 struct SkeletonRoute {

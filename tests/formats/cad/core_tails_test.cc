@@ -106,5 +106,28 @@ TEST(CoreTails, ALongBranchANodesBranchOrAThickNeighbourIsNoTail) {
   EXPECT_TRUE(d.skipped.empty());
 }
 
+TEST(CoreTails, ASegmentBeyondASpliceIsNoTailButAWiresBareConductorIs) {
+  HarnessDrawing d;
+  // A harness's bundles: a 9 mm one thinning at a splice (its start) to a 4 mm segment of 60 mm
+  // that runs on to a node with two other segments; at its end a 3.2 mm leaf of 40 mm (12.5 of
+  // its own diameters: slender, a cable) on its own. A 3 mm wire with its 1.6 mm conductor bare
+  // for 8 mm (5 diameters) at one end.
+  d.cables = {Cable("bundle", Line({0, 0, 0}, {0.3, 0, 0}), 0.009),
+              Cable("thinner", Line({0, 0, 0}, {-0.06, 0, 0}), 0.004),
+              Cable("node-a", Line({-0.06, 0, 0}, {-0.06, 0.1, 0}), 0.004),
+              Cable("node-b", Line({-0.06, 0, 0}, {-0.06, -0.1, 0}), 0.004),
+              Cable("leaf", Line({0.3, 0, 0}, {0.34, 0, 0}), 0.0032),
+              Cable("wire", Line({0, 0.1, 0}, {0.3, 0.1, 0}), 0.003),
+              Cable("conductor", Line({0.3, 0.1, 0}, {0.308, 0.1, 0}), 0.0016)};
+  AbsorbedTubes absorbed(d);
+  internal::MergeCoreTails({}, 10.0, 1e-4, &d, &absorbed);
+  absorbed.RemoveFrom(&d);
+  EXPECT_EQ(Names(d), (std::vector<std::string>{"bundle", "thinner", "node-a", "node-b", "leaf", "wire"}));
+  ASSERT_EQ(d.skipped.size(), 1u);
+  EXPECT_NE(d.skipped[0].find("'conductor': a 1.6 mm core 8 mm long out of the end of cable 'wire'"),
+            std::string::npos)
+      << d.skipped[0];
+}
+
 }  // namespace
 }  // namespace cablefit

@@ -237,5 +237,20 @@ TEST(TubeSweep, AClosedLoopHasLengthAndIsWritten) {
   EXPECT_NEAR(length, ring.ChordLength(), 0.02 * ring.ChordLength());
 }
 
+// A stub shorter than its diameter (a segment between two close nodes of a harness network) has
+// its ends closer than its diameter, as a closed loop has; it was written as two halves, which
+// read back as two tubes. Written as one, it reads back as one (a part on its own: it is stout).
+TEST(TubeSweep, AStubShorterThanItsDiameterIsOneTubeNotTwoHalves) {
+  const double d = 0.0106;  // [m]
+  Polyline stub;
+  stub.points.resize(3, 9);
+  for (int i = 0; i < 9; ++i) stub.points.col(i) << 0.001 * i, 0.0, 0.0;
+  stub.ParameteriseByChords();
+  const std::string path = (testing::FreshTempDir("sweep_stub") / "stub.step").string();
+  WriteRelaxedStep(path, OneCable(stub, d), {RelaxedCable{0, stub, d}});
+  EXPECT_THROW_WITH(ReadCadFile(path), FileError,
+                    "(1 other solids); 'swept': a tube 0.8 diameters long");
+}
+
 }  // namespace
 }  // namespace cablefit

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "cablefit/core/base/errors.h"
 #include "cablefit/formats/helper_process.h"
@@ -372,6 +375,83 @@ TEST(MeshFile, ABoreDrawnAsAnInwardShellIsTheHollowOfItsTube) {
   EXPECT_NEAR(contents.tubes[0].diameter, 0.010, 0.01 * 0.010);
   EXPECT_NEAR(contents.tubes[0].inner_diameter, 0.006, 0.01 * 0.006);
   EXPECT_TRUE(contents.tubes[0].layers.empty());
+}
+
+MeshContents ReadSupplierMesh(const std::string& name) {
+  return ReadMeshContents((testing::SourceDir() / "tests/data/supplier" / name).string(), 0.001);
+}
+
+// A coax whose four layers (a 6 mm jacket, a shield and a dielectric, hollow, each touching the
+// next, and the conductor) were meshed one by one with their own numbers of sides: where they
+// touch, their vertices coincide only where those numbers agree, and welded, the layers' rims
+// and seams are edges of four faces (tests/data/supplier/README.md).
+TEST(MeshFile, ACoaxOfTouchingLayersEachTessellatedOnItsOwnIsOneCable) {
+  const MeshContents contents = ReadSupplierMesh("coax_layers.stl");
+  EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  const MeshTube& coax = contents.tubes[0];
+  EXPECT_NEAR(coax.diameter, 0.006, 0.01 * 0.006);
+  EXPECT_EQ(coax.inner_diameter, 0.0);  // the conductor fills the dielectric's bore
+  EXPECT_EQ(coax.layers.size(), 3u);
+  EXPECT_NEAR(coax.centreline.ChordLength(), 0.12 + 0.025 * M_PI, 0.002);
+}
+
+// A stethoscope's ear tube: 3.2 mm with a 2 mm bore, bent, its rims rounded into the bore (no
+// sharp edge to tell the outer wall from the bore by).
+TEST(MeshFile, AThinBentHoseWithRoundedRimsIsOneHollowCable) {
+  const MeshContents contents = ReadSupplierMesh("ear_tube.stl");
+  EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  EXPECT_NEAR(contents.tubes[0].diameter, 0.0032, 0.01 * 0.0032);
+  EXPECT_NEAR(contents.tubes[0].inner_diameter, 0.002, 0.02 * 0.002);
+  // 60 mm, 100 degrees of a 40 mm radius and 30 mm, and the lips' rounding at both ends.
+  EXPECT_NEAR(contents.tubes[0].centreline.ChordLength(), 0.09 + 0.04 * 100 * M_PI / 180, 0.001);
+}
+
+// Meshers write the vertices of the edge between two faces of a CAD body once per face, a few
+// rounding units apart: the tube is one closed surface all the same.
+TEST(MeshFile, AFaceSeamWhoseVerticesDifferByRoundingIsNoCrack) {
+  const int sides = 16, rings = 41, seam = 20;
+  TriangleMesh tube = SweepTubeMesh(SampleCurve(BentRoute, rings), 0.008, sides);
+  const Eigen::Index nv = tube.vertices.cols();
+  tube.vertices.conservativeResize(3, nv + sides);
+  for (int k = 0; k < sides; ++k)
+    tube.vertices.col(nv + k) = tube.vertices.col(seam * sides + k) + Vec3(3e-9, -2e-9, 4e-9);
+  // The faces beyond the seam use the copies.
+  for (Eigen::Index f = 0; f < 2 * (rings - 1) * sides; ++f)
+    if (f / (2 * sides) >= seam)
+      for (int c = 0; c < 3; ++c)
+        if (tube.faces(c, f) / sides == seam)
+          tube.faces(c, f) = static_cast<int>(nv + tube.faces(c, f) % sides);
+  const MeshContents contents = RecoverMeshContents(tube);
+  EXPECT_TRUE(contents.parts.empty()) << contents.parts.front().reason;
+  ASSERT_EQ(contents.tubes.size(), 1u);
+  EXPECT_NEAR(contents.tubes[0].centreline.ChordLength(),
+              SampleCurve(BentRoute, 4001).ChordLength(), 1e-3);
+}
+
+// Where a tube ends in a tight bend (11 1/m at the cap), the route's last points (a blend onto
+// the cap over three radii) give its direction to a milliradian only: the cap's normal is the
+// end's direction, exactly.
+TEST(MeshFile, ATubeEndingInATightBendEndsAlongItsCapNormal) {
+  const double radius = 1.0 / 11, straight = 0.1, turn = M_PI / 3;
+  const auto route = [&](double u) -> Vec3 {
+    const double s = u * (straight + radius * turn);
+    if (s <= straight) return {s, 0, 0};
+    const double a = (s - straight) / radius;
+    return {straight + radius * std::sin(a), 0, radius * (1 - std::cos(a))};
+  };
+  const Polyline drawn = SampleCurve(route, 390);  // a ring every 0.5 mm
+  const std::vector<MeshTube> tubes = RecoverTubes(SweepTubeMesh(drawn, 0.008, 24));
+  ASSERT_EQ(tubes.size(), 1u);
+  const MeshTube& tube = tubes[0];
+  ASSERT_TRUE(tube.start_direction && tube.end_direction);
+  // The sweep's caps are square to its centreline's first and last chords.
+  const Eigen::Index n = drawn.points.cols();
+  const Vec3 start_cap = (drawn.points.col(1) - drawn.points.col(0)).normalized();
+  const Vec3 end_cap = (drawn.points.col(n - 1) - drawn.points.col(n - 2)).normalized();
+  EXPECT_LT(std::acos(std::min(1.0, tube.start_direction->dot(start_cap))), 1e-4);
+  EXPECT_LT(std::acos(std::min(1.0, tube.end_direction->dot(end_cap))), 1e-4);
 }
 
 }  // namespace

@@ -95,6 +95,8 @@ HarnessDrawing ReadHarnessInput(const std::string& path, double mesh_unit) {
     c.inner_diameter = tubes[k].inner_diameter;
     c.source = CableSourceKind::kMesh;
     c.fit_error = tubes[k].fit_error;
+    c.start_direction = tubes[k].start_direction;
+    c.end_direction = tubes[k].end_direction;
     for (size_t l = 0; l < tubes[k].layers.size(); ++l) {
       char line[200];
       std::snprintf(line, sizeof line,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "cablefit/core/base/errors.h"
 #include "relax/relax_route.h"
@@ -31,14 +32,17 @@ struct Candidate {
   std::string origin;
 };
 
+// The support at an end of the route; `direction` (unit, along increasing s) where the drawing
+// gives the end's direction exactly (a mesh tube's cap), else the route's tangent there.
 SupportSpec EndSupport(const EndConfig& end, double s, const Polyline& route,
-                       const Eigen::Matrix3Xd& normals) {
+                       const Eigen::Matrix3Xd& normals, const std::optional<Vec3>& direction) {
   SupportSpec sp;
   sp.kind = end.kind;
   sp.s = s;
   sp.position = RoutePoint(route, s);
-  sp.tangent = RouteTangent(route, s);
+  sp.tangent = direction ? *direction : RouteTangent(route, s);
   sp.normal = NormalAt(route, normals, s);
+  sp.normal = (sp.normal - sp.normal.dot(sp.tangent) * sp.tangent).normalized();
   sp.sliding = end.sliding;
   return sp;
 }
@@ -216,9 +220,10 @@ CableSetup SetUpCable(const HarnessDrawing& drawing, int cable,
   const EndConfig start = cc.start.value_or(EndConfig{});
   const EndConfig end = cc.end.value_or(EndConfig{});
   if (!start.free && !junction_ends.start)
-    candidates.push_back({EndSupport(start, 0.0, route, normals), 3, "start"});
+    candidates.push_back(
+        {EndSupport(start, 0.0, route, normals, drawn.start_direction), 3, "start"});
   if (!end.free && !junction_ends.end)
-    candidates.push_back({EndSupport(end, length, route, normals), 3, "end"});
+    candidates.push_back({EndSupport(end, length, route, normals, drawn.end_direction), 3, "end"});
   for (const ExtraSupportConfig& e : cc.supports) {
     SupportSpec sp;
     sp.kind = e.kind;

@@ -2,7 +2,9 @@
 // of the same tube: the mesh reader's route and diameter are what the STEP reader's are.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -95,6 +97,34 @@ TEST(RelaxMeshRoute, ACoarselyTessellatedTubeRelaxesWhereTheExactTubeDoes) {
   // 8 sides, a ring every 10 mm: a facet's chord sags 0.3 mm inside the surface, as an export at
   // a coarse chord tolerance gives.
   EXPECT_LT(StlApartFromStep(testing::FreshTempDir("relax_mesh_route_coarse"), 8, 0.010), 0.02e-3);
+}
+
+// 100 mm straight, then 60 degrees of a bend of curvature 11 1/m, to the cap.
+Vec3 TightEnd(double u) {
+  const double radius = 1.0 / 11, straight = 0.1, s = u * (straight + radius * M_PI / 3);
+  if (s <= straight) return {s, 0, 0};
+  const double a = (s - straight) / radius;
+  return {straight + radius * std::sin(a), 0, radius * (1 - std::cos(a))};
+}
+
+TEST(RelaxMeshRoute, ATubeEndingInATightBendIsClampedAlongItsCapNormal) {
+  // An 8 mm tube with a ring every 0.5 mm: the route's last points (a blend onto the cap over
+  // three radii) gave the bent end's direction 0.8 mrad off its cap's normal, and the relaxed
+  // cable 0.05 mm off the same tube read from STEP.
+  const fs::path dir = testing::FreshTempDir("relax_mesh_tight_end");
+  const Polyline drawn = testing::SampleCurve(TightEnd, 390);
+  WriteMeshFile((dir / "tight.stl").string(), SweepTubeMesh(drawn, kDiameter, 24), 0.001);
+  const json::Json stl = Relaxed(dir / "tight.stl");
+  // SweepTubeMesh squares its caps to the centreline's first and last chords.
+  const Eigen::Index n = drawn.points.cols();
+  const Vec3 caps[2] = {(drawn.points.col(1) - drawn.points.col(0)).normalized(),
+                        (drawn.points.col(n - 1) - drawn.points.col(n - 2)).normalized()};
+  for (size_t k = 0; k < 2; ++k) {
+    const Vec3 t = Tangent(stl, k);
+    std::printf("end %zu: clamp %.4f mrad off the cap's normal\n", k,
+                1e3 * std::acos(std::min(1.0, t.dot(caps[k]))));
+    EXPECT_LT(std::acos(std::min(1.0, t.dot(caps[k]))), 0.1e-3) << "support " << k;
+  }
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ struct CadReadOptions {
   /// Relative chordal deflection for tessellating other solids (fraction of their size).
   double mesh_relative_deflection = 0.01;
   /// A solid counts as a tube when its lateral (circular cross-section) faces are this fraction
-  /// of its area or more, and it is at least `min_tube_aspect` diameters long. Ten diameters:
+  /// of its area or more (or all of it but its two end caps: a tube under two diameters long),
+  /// and a cable when it is at least `min_tube_aspect` diameters long. Ten diameters:
   /// a rod model (bending, no shear, section shape kept) describes a piece only when it is
   /// slender, and below that a piece barely bends under its own weight anyway. Shorter tubes
   /// (end stubs, ferrules, screw shanks, sleeves) are kept as solids.

@@ -57,6 +57,10 @@ struct DrawnCable {
   double fit_error = 0.0;
   /// The tube solid it was recovered from, when read from CAD (null for curves and meshes).
   std::shared_ptr<const CadShapeHandle> shape;
+  /// Unit direction (along increasing s) at s = 0 and at s = length where the drawing fixes it
+  /// more exactly than the route's points do (a mesh tube's flat end cap: its normal). The clamp
+  /// at that end holds it. Unset elsewhere.
+  std::optional<Vec3> start_direction, end_direction;
 };
 
 /// A non-cable solid (clip, bracket): its shape is copied unchanged by the writer.

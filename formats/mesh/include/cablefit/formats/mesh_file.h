@@ -2,6 +2,7 @@
 // skeletonised and its skeleton split at branch points into routes with a diameter.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct MeshTube {
   /// dielectric and conductor), outermost first: their diameters [m] and components.
   std::vector<double> layers;
   std::vector<int> layer_components;
+  /// The cable's unit direction (along increasing s) at its start and at its end where that end
+  /// is a flat cap: the cap's normal, exact however coarse the tessellation, where the route's
+  /// last points (a blend onto the cap over three radii) give it only to a milliradian.
+  std::optional<Vec3> start_direction, end_direction;
 };
 
 /// A connected component of a mesh that is no cable: a bracket, a frame, a short stout part.
