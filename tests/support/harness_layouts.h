@@ -1,5 +1,6 @@
 // Branched harnesses on a bench for the harness diagnosis tests and corpus: a Y breakout, a
-// trunk with three breakouts and clips, and a Y whose branch lies on a support plate. Each
+// trunk with three breakouts and clips, an X (a trunk into three branches, one clipped), and a
+// Y whose branch lies on a support plate. Each
 // drawn a little slack between its clamps (so that it hangs), its sizes and materials varied
 // by a seed.
 #pragma once
@@ -85,7 +86,7 @@ struct HarnessLayout {
   std::vector<HarnessBox> boxes;  // also in spec.obstacles, in this order
 };
 
-/// The three bench layouts, sizes and materials drawn from `rng` (variation of about +-20 %).
+/// The four bench layouts, sizes and materials drawn from `rng` (variation of about +-20 %).
 inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.8, 1.2);
   const Vec3 origin(0, 0, 0.6);
@@ -98,13 +99,13 @@ inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
     s.name = "y";
     const double l = 0.35 * u(rng);
     const Vec3 j = origin + Vec3(l, 0.0, -0.03);
-    BranchSpec trunk = DrawnBranch("trunk", origin, j, 0.01, 0.01, bundle(1.5));
+    BranchSpec trunk = DrawnBranch("trunk", origin, j, 0.01, 0.02, bundle(1.5));
     trunk.supports.push_back(HoldAt(trunk, 0.0));
     trunk.end_junction = 0;
-    BranchSpec a = DrawnBranch("branch_a", j, j + Vec3(0.35 * u(rng), 0.2 * u(rng), 0.04), 0.02, 0.01, bundle(1.0));
+    BranchSpec a = DrawnBranch("branch_a", j, j + Vec3(0.35 * u(rng), 0.2 * u(rng), 0.04), 0.02, 0.03, bundle(1.0));
     a.supports.push_back(HoldAt(a, a.length));
     a.start_junction = 0;
-    BranchSpec b = DrawnBranch("branch_b", j, j + Vec3(0.4 * u(rng), -0.22 * u(rng), -0.02), 0.02, 0.01, bundle(0.8));
+    BranchSpec b = DrawnBranch("branch_b", j, j + Vec3(0.4 * u(rng), -0.22 * u(rng), -0.02), 0.02, 0.03, bundle(0.8));
     b.supports.push_back(HoldAt(b, b.length));
     b.start_junction = 0;
     s.branches = {trunk, a, b};
@@ -118,7 +119,7 @@ inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
     Vec3 at = origin;
     for (int k = 0; k < 4; ++k) {
       const Vec3 next = origin + Vec3(step * (k + 1), 0.0, -0.01 * k);
-      BranchSpec t = DrawnBranch("trunk_" + std::to_string(k), at, next, 0.01, 0.008, bundle(1.6));
+      BranchSpec t = DrawnBranch("trunk_" + std::to_string(k), at, next, 0.01, 0.02, bundle(1.6));
       if (k == 0) t.supports.push_back(HoldAt(t, 0.0));
       if (k == 1 || k == 2) t.supports.push_back(HoldAt(t, 0.5 * t.length, SupportKind::kClip));
       if (k == 3) t.supports.push_back(HoldAt(t, t.length));
@@ -131,13 +132,33 @@ inline std::vector<HarnessLayout> HarnessLayouts(std::mt19937& rng) {
       const Vec3 j = origin + Vec3(step * (k + 1), 0.0, -0.01 * k);
       const double side = k % 2 ? -1.0 : 1.0;
       BranchSpec b = DrawnBranch("breakout_" + std::to_string(k), j,
-                                 j + Vec3(0.05 * u(rng), side * 0.25 * u(rng), -0.05), 0.02, 0.01, bundle(0.8));
+                                 j + Vec3(0.05 * u(rng), side * 0.25 * u(rng), -0.05), 0.02, 0.03, bundle(0.8));
       b.supports.push_back(HoldAt(b, b.length));
       b.start_junction = k;
       s.branches.push_back(b);
       s.junctions.push_back({"junction_" + std::to_string(k), 0.0, 0.004});
     }
     out.push_back({"trunk3", s, {}});
+  }
+  {  // X: a trunk into a breakout of three branches, one of them held by a clip on its way.
+    NetworkSpec s;
+    s.name = "x";
+    const Vec3 j = origin + Vec3(0.3 * u(rng), 0.02, -0.02);
+    BranchSpec trunk = DrawnBranch("trunk", origin, j, 0.01, 0.02, bundle(1.6));
+    trunk.supports.push_back(HoldAt(trunk, 0.0));
+    trunk.end_junction = 0;
+    s.branches.push_back(trunk);
+    const Vec3 ends[3] = {j + Vec3(0.3 * u(rng), 0.25 * u(rng), 0.03), j + Vec3(0.4 * u(rng), 0.0, -0.04),
+                          j + Vec3(0.25 * u(rng), -0.3 * u(rng), 0.0)};
+    for (int k = 0; k < 3; ++k) {
+      BranchSpec b = DrawnBranch("leg_" + std::to_string(k), j, ends[k], 0.02, 0.03, bundle(0.9));
+      if (k == 1) b.supports.push_back(HoldAt(b, 0.5 * b.length, SupportKind::kClip));
+      b.supports.push_back(HoldAt(b, b.length));
+      b.start_junction = 0;
+      s.branches.push_back(b);
+    }
+    s.junctions = {{"breakout", 0.0, 0.006}};
+    out.push_back({"x", s, {}});
   }
   {  // A Y whose longer branch sags onto a plate under it.
     NetworkSpec s = out.front().spec;

@@ -13,10 +13,12 @@
 #include "cablefit/app/base/batch_pool.h"
 #include "cablefit/app/diagnose/diagnose_case.h"
 #include "cablefit/app/diagnose/diagnose_output.h"
+#include "cablefit/app/diagnose/harness_case.h"
 #include "cablefit/app/report/report_case.h"
 #include "cablefit/core/base/errors.h"
 #include "cablefit/cli/commands.h"
 #include "cablefit/formats/case_reader.h"
+#include "cablefit/formats/harness_case_reader.h"
 #include "terminal_text.h"
 
 namespace cablefit::addin {
@@ -53,7 +55,7 @@ int BenchDiagnose(const std::string& dir) {
   }
   // The pictures and the report count in a diagnosis' time: they are written, then removed.
   const std::filesystem::path scratch = ScratchFolder();
-  std::vector<double> shape, force;
+  std::vector<double> shape, force, harness;
   int index = 0;
   // As `cablefit diagnose --jobs 1`: one case at a time, its fits on every core the
   // process may run on (its affinity: `taskset -c 0` times one core without two threads taking
@@ -66,6 +68,19 @@ int BenchDiagnose(const std::string& dir) {
     options.shape.threads = threads;
     const auto t0 = std::chrono::steady_clock::now();
     try {
+      if (CaseFormatOf(file) == kHarnessRecordingFormat) {
+        const DiagnosedHarness h = DiagnoseHarnessCase(file, threads);
+        WriteHarnessCase((scratch / std::to_string(index++)).string(), h);
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        harness.push_back(s);
+        int branches_seen = 0;
+        for (const ShapeObservation& o : h.observation.branches) branches_seen += o.points.cols() > 0;
+        std::printf("diagnose_%s: %.3f s (harness, %s)\n", TerminalSafe(name).c_str(), s,
+                    TerminalSafe(HarnessEffectsName(h)).c_str());
+        std::printf("  %d scan points on %d branches, diagnosis %.3f s (%d forward solves)\n",
+                    h.scan_points, branches_seen, h.diagnosis.seconds, h.diagnosis.forward_solves);
+        continue;
+      }
       const DiagnosedCase d = DiagnoseCase(file, options, nullptr);
       const auto t1 = std::chrono::steady_clock::now();
       const std::string dir = (scratch / std::to_string(index++)).string();
@@ -95,6 +110,7 @@ int BenchDiagnose(const std::string& dir) {
   std::filesystem::remove_all(scratch, ignored);
   Summary("shape", shape);
   Summary("force", force);
+  Summary("harness", harness);
   return kExitOk;
 }
 

@@ -9,26 +9,37 @@
 
 namespace cablefit::internal {
 
+std::vector<Eigen::Matrix3Xd> PointOffsets(const std::vector<BranchPoints>& points,
+                                           const std::vector<Polyline>& shapes) {
+  std::vector<Eigen::Matrix3Xd> out;
+  for (size_t b = 0; b < points.size(); ++b) {
+    const BranchPoints& p = points[b];
+    if (p.points.cols() == 0) {
+      out.emplace_back(3, 0);
+      continue;
+    }
+    const Polyline& c = shapes[b];
+    // The whole branch is searched: a junction or clip that moved shifts every arc length.
+    const double length = c.s[c.size() - 1] - c.s[0];
+    out.push_back(ProjectOntoCurve(c, p.points, p.s, length).offset);
+  }
+  return out;
+}
+
 HarnessResidual::HarnessResidual(const NetworkSpec& nominal, const std::vector<BranchPoints>& points,
-                                 double element_length, double sigma)
-    : nominal_(&nominal), points_(&points), sigma_(sigma) {
+                                 double element_length)
+    : nominal_(&nominal), points_(&points) {
   options_.element_length = element_length;
   for (const BranchPoints& p : points) size_ += 3 * static_cast<int>(p.points.cols());
 }
 
 Eigen::VectorXd HarnessResidual::Offsets(const std::vector<Polyline>& shapes) const {
+  const std::vector<Eigen::Matrix3Xd> offsets = PointOffsets(*points_, shapes);
   Eigen::VectorXd r(size_);
   int at = 0;
   for (size_t b = 0; b < points_->size(); ++b) {
     const BranchPoints& p = (*points_)[b];
-    const int n = static_cast<int>(p.points.cols());
-    if (n == 0) continue;
-    const Polyline& c = shapes[b];
-    // The whole branch is searched: a junction or clip that moved shifts every arc length.
-    const double length = c.s[c.size() - 1] - c.s[0];
-    const CurveProjection proj = ProjectOntoCurve(c, p.points, p.s, length);
-    for (int i = 0; i < n; ++i) r.segment<3>(at + 3 * i) = proj.offset.col(i) / sigma_;
-    at += 3 * n;
+    for (Eigen::Index i = 0; i < p.points.cols(); ++i, at += 3) r.segment<3>(at) = p.weight[i] * offsets[b].col(i);
   }
   return r;
 }
@@ -67,8 +78,8 @@ bool HarnessResidual::Evaluate(const HarnessEffectModel* model, const Eigen::Vec
 
 HarnessFit FitHarnessModel(const HarnessEffectModel& model, const Eigen::VectorXd& start,
                            const NetworkSpec& nominal, const std::vector<BranchPoints>& points,
-                           double element_length, double sigma, int max_iterations) {
-  HarnessResidual residual(nominal, points, element_length, sigma);
+                           double element_length, int max_iterations) {
+  HarnessResidual residual(nominal, points, element_length);
   LmOptions lm;
   lm.max_iterations = max_iterations;
   lm.relative_step = 1e-3;
@@ -89,11 +100,11 @@ HarnessFit FitHarnessModel(const HarnessEffectModel& model, const Eigen::VectorX
 
 HarnessScreen ScreenHarnessModel(const HarnessEffectModel& model, const Eigen::VectorXd& nominal_residual,
                                  const NetworkSpec& nominal, const std::vector<BranchPoints>& points,
-                                 double element_length, double sigma) {
+                                 double element_length) {
   HarnessScreen out;
   out.start = model.x0;
   out.predicted_cost = 0.5 * nominal_residual.squaredNorm();
-  HarnessResidual residual(nominal, points, element_length, sigma);
+  HarnessResidual residual(nominal, points, element_length);
   const int na = static_cast<int>(model.amplitudes.size());
   Eigen::MatrixXd jac(nominal_residual.size(), na);
   // Steps of a tenth of each amplitude's typical size: the effect's own scale, not round-off.

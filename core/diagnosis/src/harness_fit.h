@@ -16,20 +16,27 @@ namespace cablefit::internal {
 struct BranchPoints {
   Eigen::Matrix3Xd points;  // 3 x n [m]
   Eigen::VectorXd s;        // n [m]
+  /// n [1/m]: 1 / sqrt(sigma^2 + e^2), the recording's noise sigma and the forward model's own
+  /// error e at the point (its discretisation, largest where the cable drapes over an edge).
+  Eigen::VectorXd weight;
 };
+
+/// Offsets (3 x n per branch [m]) of the points from `shapes` (per branch centrelines).
+std::vector<Eigen::Matrix3Xd> PointOffsets(const std::vector<BranchPoints>& points,
+                                           const std::vector<Polyline>& shapes);
 
 class HarnessResidual {
  public:
-  /// `points` per branch of `nominal`; offsets are divided by `sigma` [m].
+  /// `points` per branch of `nominal`; offsets are weighted by each point's weight.
   HarnessResidual(const NetworkSpec& nominal, const std::vector<BranchPoints>& points,
-                  double element_length, double sigma);
+                  double element_length);
 
   /// Residual of `model` at x (or of the nominal when `model` is null): 3 per observed point,
   /// branch by branch. False when the changed harness cannot be solved. `shapes` (optional)
   /// receives the solved branch centrelines.
   bool Evaluate(const HarnessEffectModel* model, const Eigen::VectorXd& x, Eigen::VectorXd* r,
                 std::vector<Polyline>* shapes = nullptr);
-  /// The offsets of `points` from given branch shapes (no solve), in noise units.
+  /// The weighted offsets of `points` from given branch shapes (no solve).
   Eigen::VectorXd Offsets(const std::vector<Polyline>& shapes) const;
   int size() const { return size_; }
   int solves() const { return solves_; }
@@ -40,7 +47,6 @@ class HarnessResidual {
   const NetworkSpec* nominal_;
   const std::vector<BranchPoints>* points_;
   NetworkOptions options_;
-  double sigma_;
   int size_ = 0;
   int solves_ = 0;
   NetworkSolution last_;  // warm start
@@ -58,7 +64,7 @@ struct HarnessFit {
 /// Levenberg-Marquardt of `model` from `start` against the observation.
 HarnessFit FitHarnessModel(const HarnessEffectModel& model, const Eigen::VectorXd& start,
                            const NetworkSpec& nominal, const std::vector<BranchPoints>& points,
-                           double element_length, double sigma, int max_iterations);
+                           double element_length, int max_iterations);
 
 /// The linearised fit of the model's amplitudes at its neutral start (one difference solve per
 /// amplitude): the start it suggests and the cost it predicts.
@@ -69,6 +75,6 @@ struct HarnessScreen {
 };
 HarnessScreen ScreenHarnessModel(const HarnessEffectModel& model, const Eigen::VectorXd& nominal_residual,
                                  const NetworkSpec& nominal, const std::vector<BranchPoints>& points,
-                                 double element_length, double sigma);
+                                 double element_length);
 
 }  // namespace cablefit::internal

@@ -3,8 +3,10 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cablefit/core/network/network_simulation.h"
+#include "cablefit/core/rod/initial_shape.h"
 #include "cablefit/core/solver/centerline_sampling.h"
 #include "cablefit/formats/centerline_csv.h"
 #include "cablefit/formats/json_util.h"
@@ -75,7 +77,14 @@ HiddenHarnessEffect HideHarnessEffect(const std::string& effect, const HarnessLa
           c = q;
         }
       }
-    const double d = (u(rng) < 0.5 ? -1.0 : 1.0) * (0.015 + 0.02 * u(rng));
+    // The branch that gets shorter must keep slack: a third of what it has at most.
+    auto slack = [&](const End& e) {
+      const BranchSpec& b = nominal.branches[static_cast<size_t>(e.branch)];
+      return b.length - (b.route.points.rightCols<1>() - b.route.points.col(0)).norm();
+    };
+    const double sign = u(rng) < 0.5 ? -1.0 : 1.0;
+    const double room = 0.33 * slack(sign > 0 ? ends[c] : ends[a]);
+    const double d = sign * std::min(0.01 + 0.02 * u(rng), room);
     BranchSpec& ba = t.branches[static_cast<size_t>(ends[a].branch)];
     BranchSpec& bc = t.branches[static_cast<size_t>(ends[c].branch)];
     ba.length += d;
@@ -111,7 +120,7 @@ HiddenHarnessEffect HideHarnessEffect(const std::string& effect, const HarnessLa
     h.support = k;
     SupportSpec& sp = t.branches[static_cast<size_t>(b)].supports[static_cast<size_t>(k)];
     if (effect == "clip_position") {
-      const double d = (u(rng) < 0.5 ? -1.0 : 1.0) * (0.015 + 0.015 * u(rng));
+      const double d = (u(rng) < 0.5 ? -1.0 : 1.0) * (0.006 + 0.008 * u(rng));
       h.interval = std::make_pair(std::min(sp.s, sp.s + d), std::max(sp.s, sp.s + d));
       sp.s += d;
     } else {
@@ -164,10 +173,37 @@ HiddenHarnessEffect HideHarnessEffect(const std::string& effect, const HarnessLa
   return h;
 }
 
+// The largest distance between the nominal and the truth, branch by branch at equal arc
+// length fractions [m]; infinite when either cannot be solved.
+double LargestShift(const NetworkSpec& nominal, const NetworkSpec& truth) {
+  try {
+    const NetworkSolution a = Solve(nominal), b = Solve(truth);
+    if (!a.converged() || !b.converged()) return std::numeric_limits<double>::infinity();
+    double largest = 0.0;
+    for (size_t k = 0; k < a.branches.size(); ++k) {
+      const double la = a.branches[k].s[a.branches[k].size() - 1];
+      const double lb = b.branches[k].s[b.branches[k].size() - 1];
+      for (int i = 0; i <= 200; ++i) {
+        const double f = i / 200.0;
+        const Vec3 d = PointAt(a.branches[k], f * la) - PointAt(b.branches[k], f * lb);
+        largest = std::max(largest, d.norm());
+      }
+    }
+    return largest;
+  } catch (const InvalidInput&) {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
 PointCloud ScanHarness(const NetworkSpec& truth, const HarnessScanOptions& options, std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const NetworkSolution sol = Solve(truth);
   PointCloud cloud;
+  NetworkSolution sol;
+  try {
+    sol = Solve(truth);
+  } catch (const InvalidInput&) {
+    return cloud;  // a hidden change the harness cannot take (a stretch made too short)
+  }
   if (!sol.converged()) return cloud;
   double total = 0.0;
   for (const BranchSpec& b : truth.branches) total += b.length;
@@ -206,6 +242,12 @@ bool WriteHarnessCaseFolder(const std::filesystem::path& dir, const HarnessLayou
   const PointCloud cloud = ScanHarness(truth, scan, rng);
   if (cloud.size() == 0) {
     if (why) *why = "the hidden truth could not be solved";
+    return false;
+  }
+  // A hidden effect that moves no part of the harness by ten noise sigmas is not in the scan:
+  // nothing could name it, so it is no case (a clip shifted onto where the bundle lies anyway).
+  if (!hidden.empty() && LargestShift(layout.spec, truth) < 10 * scan.noise_sigma) {
+    if (why) *why = "the hidden effect does not show";
     return false;
   }
   std::filesystem::create_directories(dir / "routes");

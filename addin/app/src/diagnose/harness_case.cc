@@ -1,6 +1,7 @@
 #include "cablefit/app/diagnose/harness_case.h"
 
 #include <chrono>
+#include <cstdlib>
 
 #include "cablefit/core/base/solver_failure.h"
 #include "cablefit/core/network/network_simulation.h"
@@ -53,8 +54,8 @@ DiagnosedHarness DiagnoseHarnessCase(const std::string& case_file, int threads) 
     // Split along the nominal harness, diagnose; split again along the fitted one when it moved
     // the branches, and diagnose that.
     std::vector<Polyline> shapes = NominalShapes(spec);
+    HarnessScanSplit split = SplitHarnessScan(cloud, spec, shapes);
     for (int pass = 0; pass < 2; ++pass) {
-      const HarnessScanSplit split = SplitHarnessScan(cloud, spec, shapes);
       std::vector<std::string> problems;
       HarnessObservation obs = ObserveHarnessScan(split, spec, shapes, &problems);
       d.diagnosis = DiagnoseHarness(spec, obs, options);
@@ -63,10 +64,17 @@ DiagnosedHarness DiagnoseHarnessCase(const std::string& case_file, int threads) 
       for (const PointCloud& c : split.branches) d.split_points.push_back(c.size());
       if (pass == 0) d.notes.insert(d.notes.end(), problems.begin(), problems.end());
       if (d.diagnosis.effects.empty()) break;
+      // Split again along the fitted harness; diagnosed once more only when that moves points
+      // between branches (more than 0.5 % of them).
       shapes = d.diagnosis.fitted;
-      if (pass == 0)
-        d.notes.push_back("the scan was split onto the branches again along the fitted harness and "
-                          "diagnosed once more");
+      HarnessScanSplit again = SplitHarnessScan(cloud, spec, shapes);
+      int moved = 0;
+      for (size_t b = 0; b < again.branches.size(); ++b)
+        moved += std::abs(again.branches[b].size() - split.branches[b].size());
+      if (pass == 1 || moved <= 0.005 * cloud.size()) break;
+      split = std::move(again);
+      d.notes.push_back("the scan was split onto the branches again along the fitted harness (" +
+                        std::to_string(moved) + " points changed branch) and diagnosed once more");
     }
   } else {
     d.observation_source = "centrelines";

@@ -129,8 +129,7 @@ std::string Report(const DiagnosedHarness& d, const Json& j) {
   h << "<h1>" << HtmlEscape(d.recording.name) << "</h1>";
   h << "<section class=\"card\"><h2>Verdict</h2><p>" << EffectBadge(HarnessEffectsName(d)) << " ";
   if (!g.explained) {
-    h << "No effect of the harness catalogue, alone or with another, brings the recording within "
-         "its noise: not explained.";
+    h << "Not explained: " << HtmlEscape(g.reason) << ".";
   } else if (g.effects.empty()) {
     h << "The recorded harness matches its nominal set-up within the recording's noise.";
   } else {
@@ -194,6 +193,7 @@ Json HarnessDiagnosisToJson(const DiagnosedHarness& d) {
   j["case"] = d.recording.name;
   j["verdict"] = !g.explained ? "not explained" : g.effects.empty() ? "none" : "explained";
   j["explained"] = g.explained;
+  if (!g.explained) j["reason"] = g.reason;
   j["effect"] = g.explained && !g.effects.empty() ? ToString(g.effects.front().effect) : (g.explained ? "none" : "not_explained");
   j["confidence"] = g.confidence;
   Json effects = Json::array();
@@ -216,6 +216,8 @@ Json HarnessDiagnosisToJson(const DiagnosedHarness& d) {
   j["fitted"] = {{"max", g.fitted_max}};
   j["improvement"] = g.fitted_max > 0 ? g.baseline_max / g.fitted_max : 0.0;
   j["noise_sigma"] = g.noise_sigma;
+  j["model_error"] = g.model_error;
+  j["element_length"] = g.element_length;
   j["adequacy"] = {{"chi_square", g.chi_square}, {"limit", g.limit}};
   Json candidates = Json::array();
   for (size_t k = 0; k < g.candidates.size() && k < 12; ++k) {

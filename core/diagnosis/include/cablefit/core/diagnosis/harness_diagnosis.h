@@ -54,8 +54,12 @@ struct HarnessDiagnosisOptions {
   double noise_allowance = 3.0;
   /// Single models carried from the linearised screening to a full fit, and how many of the
   /// best fitted singles are combined in pairs.
-  int fitted_singles = 8;
-  int paired_singles = 5;
+  int fitted_singles = 6;
+  int paired_singles = 4;
+  /// Pairs are searched only when the best single model leaves more than this many times the
+  /// recording's noise (rms per component) [-]: a single effect that explains the recording
+  /// needs no second one, and a pair search is most of the work.
+  double pair_search_allowance = 2.0;
   int threads = 1;  // fits in parallel; the result does not depend on it
 };
 
@@ -100,8 +104,10 @@ struct HarnessCandidate {
 };
 
 struct HarnessDiagnosis {
-  /// False: no model of the catalogue (one or two effects) brings the recording within its noise.
+  /// False: no model of the catalogue (one or two effects) brings the recording within its
+  /// noise, or the nominal harness is not resolved well enough to tell the effects apart.
   bool explained = true;
+  std::string reason;  // why not explained (empty when explained)
   double confidence = 0.0;  // [0, 1] of the chosen model among the fitted ones
   std::vector<HarnessFoundEffect> effects;  // the chosen model's, dominant first; empty = none
   std::vector<HarnessBranchDeviation> branches;
@@ -110,6 +116,11 @@ struct HarnessDiagnosis {
   double baseline_max = 0.0;      // [m] largest nominal deviation over all branches
   double fitted_max = 0.0;        // [m]
   double noise_sigma = 0.0;       // [m] the recording's centre-point noise
+  /// [m] the forward model's largest own error at a recorded point (its discretisation: the
+  /// nominal against the nominal on elements half as long); each point counts with the noise
+  /// and this error together, so the fits do not explain the model's error by an effect.
+  double model_error = 0.0;
+  double element_length = 0.0;  // [m] of the fits' forward solves (halved when unresolved)
   double chi_square = 0.0;        // of the chosen (or best) model, offsets / (allowance sigma)
   double limit = 0.0;             // 99.9 % chi-square quantile at its degrees of freedom
   std::vector<HarnessCandidate> candidates;  // every fitted model, best BIC first (none included)
