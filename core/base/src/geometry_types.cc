@@ -43,4 +43,20 @@ Mat3 Frame::Matrix() const {
   return m;
 }
 
+TriangleMesh BoxMesh(const Vec3& lo, const Vec3& hi) {
+  TriangleMesh m;
+  m.vertices.resize(3, 8);
+  for (int k = 0; k < 8; ++k)
+    m.vertices.col(k) = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  // Vertex k has bit 0 for x, 1 for y, 2 for z: each quad lists its corners counter-clockwise
+  // seen from outside (-z, +z, -y, +y, -x, +x).
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  m.faces.resize(3, 12);
+  for (int f = 0; f < 6; ++f) {
+    m.faces.col(2 * f) << quads[f][0], quads[f][1], quads[f][2];
+    m.faces.col(2 * f + 1) << quads[f][0], quads[f][2], quads[f][3];
+  }
+  return m;
+}
+
 }  // namespace cablefit

@@ -439,6 +439,17 @@ void DemoteDucts(HarnessDrawing* drawing, double relative_deflection) {
   cables = std::move(kept);
 }
 
+// A cable's tube kept as a solid part instead (its name, colour and shape unchanged).
+DrawnSolid SolidOfCable(const DrawnCable& cable, const CadReadOptions& options) {
+  DrawnSolid solid;
+  solid.name = cable.name;
+  solid.has_color = cable.has_color;
+  solid.color = cable.color;
+  solid.mesh = Tessellate(cable.shape->shape, options.mesh_relative_deflection);
+  solid.shape = cable.shape;
+  return solid;
+}
+
 // A cable that its merges made stout (a conductor stub that took its insulation's diameter, a
 // short route curve inside a thick sheath) is no more a cable than a tube that was stout to begin
 // with: the rod model needs a slender piece, whichever way the cable was recognised (and the
@@ -460,15 +471,7 @@ void DemoteStubs(const CadReadOptions& options, internal::AbsorbedTubes* absorbe
                   cable.shape ? "tube" : "cable drawn as a curve", length / cable.diameter,
                   1e3 * cable.diameter, options.min_tube_aspect);
     const std::string name = cable.name.empty() ? std::string("unnamed") : cable.name;
-    if (cable.shape) {
-      DrawnSolid solid;
-      solid.name = cable.name;
-      solid.has_color = cable.has_color;
-      solid.color = cable.color;
-      solid.mesh = Tessellate(cable.shape->shape, options.mesh_relative_deflection);
-      solid.shape = cable.shape;
-      drawing->solids.push_back(std::move(solid));
-    }
+    if (cable.shape) drawing->solids.push_back(SolidOfCable(cable, options));
     absorbed->ReleaseSolidsOf(static_cast<int>(c));
     internal::DrawnTube self;
     self.is_cable = true;
@@ -483,13 +486,7 @@ void DemoteRigidPipes(const CadReadOptions& options, internal::AbsorbedTubes* ab
                       HarnessDrawing* drawing, const std::vector<internal::DrawnTube>& tubes) {
   for (const internal::RigidPipe& pipe : internal::FindRigidPipes(tubes, *absorbed, *drawing)) {
     const DrawnCable& cable = drawing->cables[static_cast<size_t>(pipe.cable)];
-    DrawnSolid solid;
-    solid.name = cable.name;
-    solid.has_color = cable.has_color;
-    solid.color = cable.color;
-    solid.mesh = Tessellate(cable.shape->shape, options.mesh_relative_deflection);
-    solid.shape = cable.shape;
-    drawing->solids.push_back(std::move(solid));
+    drawing->solids.push_back(SolidOfCable(cable, options));
     internal::DrawnTube self;
     self.is_cable = true;
     self.index = pipe.cable;

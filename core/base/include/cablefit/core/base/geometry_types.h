@@ -36,6 +36,10 @@ struct TriangleMesh {
   Eigen::Matrix3Xi faces;     // 3 x nf, vertex indices, counter-clockwise seen from outside
 };
 
+/// The closed axis-aligned box [lo, hi] [m] as a solid's surface: 8 vertices, 12 triangles
+/// facing outward (a support plate, a bench table).
+TriangleMesh BoxMesh(const Vec3& lo, const Vec3& hi);
+
 /// An orthonormal material frame: d3 is the tangent, d1 the material normal, d2 = d3 x d1.
 struct Frame {
   Vec3 d1 = Vec3::UnitX();
