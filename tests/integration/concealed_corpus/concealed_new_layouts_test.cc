@@ -76,12 +76,11 @@ TEST(ConcealedNewLayoutsTest, ConfusionMatrix) {
           testing::HideParts({a, b}, nominal, rng, &truth, true);
       const std::string label = testing::Multiset({a.effect, b.effect});
       const bool hard = (li + pi) % 2 == 1;
-      const testing::Outcome o =
-          testing::RunPairCase(lay.name, (hard ? "sparse " : "") + label, nominal, truth, truths,
-                               rng, full || sampled(li, pi), check,
-                               hard ? testing::SparseNoisyScan() : testing::ScanQuality{});
-      tally.Add("pair", (hard ? "sparse " : "") + label, o);
-      if (hard) sparse.Add("pair", "sparse " + label, o);
+      const testing::Outcome o = testing::RunPairCase(
+          lay.name, label, nominal, truth, truths, rng, full || sampled(li, pi), check,
+          hard ? testing::SparseNoisyScan() : testing::ScanQuality{});
+      tally.Add("pair", label, o);
+      if (hard) sparse.Add("pair", label, o);
     }
     for (size_t si = 0; si < 2; ++si) {
       const std::string effect = singles[2 * li + si];
@@ -90,16 +89,16 @@ TEST(ConcealedNewLayoutsTest, ConfusionMatrix) {
       const std::vector<testing::Truth> truths =
           testing::HideParts({HiddenPart(effect.c_str())}, nominal, rng, &truth, true);
       const bool hard = si == 1;
-      const testing::Outcome o = testing::RunPairCase(
-          lay.name, (hard ? "sparse " : "") + effect, nominal, truth, truths, rng, controls_run(li),
-          check, hard ? testing::SparseNoisyScan() : testing::ScanQuality{});
-      tally.Add("single", (hard ? "sparse " : "") + effect, o);
-      if (hard) sparse.Add("single", "sparse " + effect, o);
+      const testing::Outcome o =
+          testing::RunPairCase(lay.name, effect, nominal, truth, truths, rng, controls_run(li),
+                               check, hard ? testing::SparseNoisyScan() : testing::ScanQuality{});
+      tally.Add("single", effect, o);
+      if (hard) sparse.Add("single", effect, o);
     }
     {
       const RodSpec nominal = MakeNominal(lay, rng);
       const bool hard = li % 2 == 1;
-      const std::string label = hard ? "sparse none" : "none";
+      const std::string label = "none";
       const testing::Outcome o =
           testing::RunPairCase(lay.name, label, nominal, nominal, {}, rng, controls_run(li), check,
                                hard ? testing::SparseNoisyScan() : testing::ScanQuality{});
