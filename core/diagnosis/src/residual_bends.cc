@@ -18,7 +18,10 @@ std::vector<ResidualBend> FindResidualBends(const Eigen::VectorXd& offsets,
   const Eigen::Index n = s.size();
   std::vector<ResidualBend> bends;
   if (n < kMinWindowPoints || offsets.size() != 3 * n || !(length > 0)) return bends;
-  const double h = 0.5 * window * length;
+  // The window is widened to hold enough points at the recording's mean spacing: a recording
+  // thinned to a few tens of points has fewer than that in a tenth of the cable.
+  const double spacing = (s[n - 1] - s[0]) / static_cast<double>(n - 1);
+  const double h = std::max(0.5 * window * length, 0.5 * (kMinWindowPoints + 1) * spacing);
   Eigen::VectorXd k = Eigen::VectorXd::Zero(n);  // the residual's curvature at each point
   std::vector<bool> valid(static_cast<size_t>(n), false);
   Eigen::Index lo = 0, hi = 0;

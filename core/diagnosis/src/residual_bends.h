@@ -21,7 +21,8 @@ struct ResidualBend {
 /// points at arc lengths `s` (n [m], increasing) on a cable of `length` [m], strongest first,
 /// each at least `separation` of the cable from the others. The curvature is the second
 /// derivative of a quadratic fitted to the offsets over a window of `window` of the cable about
-/// each point (which averages the noise out); windows with too few points (a gap) are skipped.
+/// each point (which averages the noise out), wider where the points are too sparse for it;
+/// windows with too few points or one side unseen (a gap, an end) are skipped.
 std::vector<ResidualBend> FindResidualBends(const Eigen::VectorXd& offsets,
                                             const Eigen::VectorXd& s, double length, int count,
                                             double window = 0.12, double separation = 0.1);

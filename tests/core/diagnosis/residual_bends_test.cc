@@ -33,6 +33,18 @@ TEST(ResidualBendsTest, FindsAKinkWhereItIs) {
   }
 }
 
+// A recording thinned to a few tens of points (fewer than a window needs in a tenth of the
+// cable) still shows where it bends.
+TEST(ResidualBendsTest, FindsAKinkAmongFewPoints) {
+  for (int n : {20, 40}) {
+    const Eigen::VectorXd s = Eigen::VectorXd::LinSpaced(n, 0.01, 0.55);
+    const std::vector<ResidualBend> bends =
+        FindResidualBends(Kinked(s, 0.36, 0.005, 2e-5, 7), s, 0.57, 2);
+    ASSERT_FALSE(bends.empty()) << n;
+    EXPECT_NEAR(bends.front().s, 0.36, 0.04) << n;
+  }
+}
+
 TEST(ResidualBendsTest, FindsTwoKinksStrongestFirst) {
   const Eigen::VectorXd s = Eigen::VectorXd::LinSpaced(300, 0.0, 1.0);
   const Eigen::VectorXd r = Kinked(s, 0.3, 0.004, 1e-5, 5) + Kinked(s, 0.75, 0.01, 1e-5, 6);
