@@ -7,7 +7,7 @@
 // the hidden one (for an effect of the whole cable, where the truth hangs apart from the truth
 // without it). Single-effect and clean controls must come out as one effect and none.
 //
-// The full corpus takes most of an hour on two cores: it runs when CABLEFIT_CORPUS_FULL=1 (or
+// The full corpus takes five to six minutes on two cores: it runs when CABLEFIT_CORPUS_FULL=1 (or
 // for the cases CABLEFIT_CORPUS_ONLY names); by default a fixed sample of it runs, two pairs
 // and the controls per layout, and under sanitizers the first layout's sample only. Every case
 // is drawn either way, so a sample is the same cases as in the full run.
