@@ -9,6 +9,7 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/parallel_for.h"
 #include "effect_combination.h"
+#include "residual_bends.h"
 
 namespace cablefit {
 namespace {
@@ -41,6 +42,9 @@ Eigen::VectorXd Concat(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 // SharePartsOfTheBest: a rival that overtakes the best shares its part back, at most this many
 // times (each pair is started from each best once).
 constexpr int kSharedPartRounds = 3;
+
+// How many of a residual's bends a placed effect starts at.
+constexpr int kResidualBends = 2;
 
 // A fine refit this many times worse than its coarse screening left the screening's branch.
 constexpr double kBranchJump = 4.0;
@@ -93,24 +97,37 @@ struct PairStart {
 // overshoots, but it often lies in the right basin), and from every start of either effect with
 // the other at its single fit: a single fit that absorbed the other cause can sit in the wrong
 // basin of a non-convex effect (a curvature span's place and width, a contact's place, angles),
-// or where its effect does nothing and has no gradient (a clamp compliance fitted to zero). The
-// same effect twice (two curvature spans, two contacts) starts its second copy at the effect's
-// starts away from the fitted first.
+// or where its effect does nothing and has no gradient (a clamp compliance fitted to zero). A
+// placed effect also starts where the other single fit's residual bends (residual_bends.h):
+// the grid of places is the same on every layout, the residual's bends are where this
+// recording's missing effect is. The same effect twice (two curvature spans, two contacts)
+// starts its second copy at the effect's starts away from the fitted first.
 std::vector<PairStart> PairStarts(const EffectModel& ma, const Fit& fa, const EffectModel& mb,
-                                  const Fit& fb, bool same_model, double length) {
+                                  const Fit& fb, bool same_model, const FitContext& ctx) {
+  const double length = ctx.length;
   std::vector<PairStart> starts;
   auto with_a_fitted = [&](const Eigen::VectorXd& s) {
     starts.push_back({Concat(fa.x, s), mb.is_neutral(s) ? 0 : -1});
   };
+  auto bent = [&](const EffectModel& m, const Fit& other) {
+    if (!m.starts_at_bends || other.offsets.size() != 3 * ctx.s.size())
+      return std::vector<Eigen::VectorXd>{};
+    return m.starts_at_bends(FindResidualBends(other.offsets, ctx.s, length, kResidualBends));
+  };
   if (same_model) {
     for (const Eigen::VectorXd& s : mb.starts)
+      if (std::abs(s[0] - fa.x[0]) > 0.15 * length) with_a_fitted(s);
+    for (const Eigen::VectorXd& s : bent(mb, fa))
       if (std::abs(s[0] - fa.x[0]) > 0.15 * length) with_a_fitted(s);
     return starts;
   }
   starts.push_back({Concat(fa.x, fb.x), -1});
   for (const Eigen::VectorXd& s : mb.starts) with_a_fitted(s);
   for (const Eigen::VectorXd& s : mb.residual_starts) with_a_fitted(s);
+  for (const Eigen::VectorXd& s : bent(mb, fa)) with_a_fitted(s);
   for (const Eigen::VectorXd& s : ma.starts)
+    starts.push_back({Concat(s, fb.x), ma.is_neutral(s) ? 1 : -1});
+  for (const Eigen::VectorXd& s : bent(ma, fb))
     starts.push_back({Concat(s, fb.x), ma.is_neutral(s) ? 1 : -1});
   return starts;
 }
@@ -168,8 +185,7 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
       EffectModel m = CombineEffects(singles, first, second);
       const std::vector<PairStart> starts =
           PairStarts(singles[static_cast<size_t>(first)], a_first ? fa : fb,
-                     singles[static_cast<size_t>(second)], a_first ? fb : fa, a == b,
-                     nominal.length);
+                     singles[static_cast<size_t>(second)], a_first ? fb : fa, a == b, ctx);
       fitted_parts.emplace_back();
       for (const PairStart& s : starts) {
         m.starts.push_back(s.x);

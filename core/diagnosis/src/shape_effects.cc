@@ -86,6 +86,17 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
         x << L * (i + 0.5) / 6, w, 0.0, 0.0;
         m.starts.push_back(x);
       }
+    // A bend of the residual is the span itself (a step of curvature over it): as wide as the
+    // bend, within the grid's widths.
+    m.starts_at_bends = [=](const std::vector<ResidualBend>& bends) {
+      std::vector<Eigen::VectorXd> starts;
+      for (const ResidualBend& b : bends) {
+        Eigen::VectorXd x(4);
+        x << b.s, std::clamp(b.width, L / 8, L / 3), 0.0, 0.0;
+        starts.push_back(x);
+      }
+      return starts;
+    };
     m.change = [=](const Eigen::VectorXd& x, RodSpec* s) {
       NaturalCurvatureSpec nc;
       std::tie(nc.s_start, nc.s_end) = CurvedSpan(x, L);
@@ -210,6 +221,12 @@ std::vector<EffectModel> BuildEffectModels(const RodSpec& nominal,
       x[0] = L * i / 8.0;
       m.residual_starts.push_back(x);
     }
+    // A point force bends the residual most where it pushes.
+    m.starts_at_bends = [](const std::vector<ResidualBend>& bends) {
+      std::vector<Eigen::VectorXd> starts;
+      for (const ResidualBend& b : bends) starts.push_back(Eigen::Vector3d(b.s, 0.0, 0.0));
+      return starts;
+    };
     const Vec3 gravity = nominal.gravity;
     auto force = [=](const Eigen::VectorXd& x) {
       const internal::ContactFrame f = internal::RecordedContactFrame(

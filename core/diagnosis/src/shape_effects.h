@@ -18,6 +18,7 @@
 #include "cablefit/core/diagnosis/shape_effect.h"
 #include "cablefit/core/rod/rod_spec.h"
 #include "cablefit/core/solver/rod_solution.h"
+#include "residual_bends.h"
 
 namespace cablefit {
 
@@ -47,6 +48,10 @@ struct EffectModel {
   /// More starts when the effect is added to another one's fit: what that fit leaves is
   /// smaller and more local than the whole mismatch, so a placed effect needs a finer grid.
   std::vector<Eigen::VectorXd> residual_starts;
+  /// A placed effect's starts at the places where another fit's residual bends, at zero
+  /// strength (residual_bends.h): where the effect belongs follows from what the other fit
+  /// leaves, not from a grid laid out for some layouts. Null for effects without a place.
+  std::function<std::vector<Eigen::VectorXd>(const std::vector<ResidualBend>&)> starts_at_bends;
   /// The parameters that set the effect's strength: where all of them are zero the model is
   /// the spec it changes, and the other parameters (where, how wide) do nothing. Empty when no
   /// parameter value is neutral.

@@ -205,5 +205,32 @@ TEST(ShapeEffectsTest, NeutralParametersChangeNothing) {
   EXPECT_GE(with_amplitudes, 5);  // curvature, both clamp orientations, weight, contact, twists
 }
 
+// A placed effect starts at each bend of a residual, where the bend is and with no strength
+// (the other effect's fit is the start's shape); an effect without a place has no such starts.
+TEST(ShapeEffectsTest, PlacedEffectsStartAtResidualBends) {
+  const RodSpec nominal = TwoClamps();
+  const double L = nominal.length;
+  const std::vector<EffectModel> models = Models(nominal, {0.01, 0.01});
+  const std::vector<ResidualBend> bends = {{0.3 * L, 0.01 * L, 2.0}, {0.7 * L, 0.9 * L, 1.0}};
+  for (ShapeEffect e : {ShapeEffect::kIntrinsicCurvature, ShapeEffect::kSupportContact}) {
+    SCOPED_TRACE(ToString(e));
+    const EffectModel& m = ModelOf(models, e);
+    ASSERT_TRUE(m.starts_at_bends);
+    const std::vector<Eigen::VectorXd> starts = m.starts_at_bends(bends);
+    ASSERT_EQ(starts.size(), bends.size());
+    for (size_t i = 0; i < bends.size(); ++i) {
+      EXPECT_EQ(starts[i].size(), m.physical_parameters);
+      EXPECT_DOUBLE_EQ(starts[i][0], bends[i].s);
+      EXPECT_TRUE(m.is_neutral(starts[i]));
+    }
+  }
+  // A curvature span as wide as its bend, but neither a point nor the whole cable.
+  const std::vector<Eigen::VectorXd> spans =
+      ModelOf(models, ShapeEffect::kIntrinsicCurvature).starts_at_bends(bends);
+  EXPECT_GT(spans[0][1], 0.01 * L);
+  EXPECT_LT(spans[1][1], 0.9 * L);
+  EXPECT_FALSE(ModelOf(models, ShapeEffect::kClampCompliance).starts_at_bends);
+}
+
 }  // namespace
 }  // namespace cablefit

@@ -22,6 +22,33 @@ std::vector<Layout> CorpusLayouts() {
   };
 }
 
+std::vector<Layout> NewLayouts() {
+  return {
+      // The far clamp well below the first, the cable leaving downwards and arriving steeply.
+      {"steep", 0.35, 0.8, 0.3, Vec3(1, 0, -0.4), Vec3(0.2, 0.1, -1)},
+      // Parallel clamps set side by side: the cable makes an S in plan as it sags.
+      {"s_clips", 0.6, 0.1, 0.6, Vec3(1, 0, 0), Vec3(1, 0, 0)},
+      // A long, limp span: weight far above stiffness.
+      {"long_sag", 0.85, 0.05, 0.0, Vec3(1, 0, 0.2), Vec3(1, 0, -0.2), 40.0, 90.0},
+      // Out of plane, rising to the far clamp, which is set a half-turn and more off the cable's
+      // own twist.
+      {"twisted3d", 0.5, -0.2, -0.9, Vec3(0.8, -0.2, 0.4), Vec3(-0.3, -1, 0.3), 2.0, 35.0, 1.9},
+  };
+}
+
+const Layout* FindLayout(const std::string& name) {
+  static const std::vector<Layout> all = [] {
+    std::vector<Layout> a = CorpusLayouts();
+    for (const Layout& l : NewLayouts()) a.push_back(l);
+    return a;
+  }();
+  for (const Layout& l : all)
+    if (name == l.name) return &l;
+  return nullptr;
+}
+
+ScanQuality SparseNoisyScan() { return {0.5, 0.1, 2.0}; }
+
 RodSpec MakeNominal(const Layout& lay, std::mt19937& rng, double gravity_number) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   RodSpec s;
@@ -31,7 +58,7 @@ RodSpec MakeNominal(const Layout& lay, std::mt19937& rng, double gravity_number)
   s.material.diameter = 0.005 + 0.004 * u(rng);
   // Gravity number w L^3 / EI between 2 (stiff, little sag) and 35 (visibly sagging, not a
   // string).
-  const double drawn = 2 + 33 * u(rng);
+  const double drawn = lay.min_gravity + (lay.max_gravity - lay.min_gravity) * u(rng);
   const double gn = gravity_number > 0 ? gravity_number : drawn;
   s.material.linear_density = gn * s.material.bending_stiffness / (9.81 * std::pow(s.length, 3));
   SupportSpec a, b;
@@ -56,7 +83,7 @@ RodSpec MakeNominal(const Layout& lay, std::mt19937& rng, double gravity_number)
     const Vec3 t = lay.t1.normalized();
     const Vec3 d1 = Eigen::Quaterniond::FromTwoVectors(f.d3, t) * f.d1;
     std::normal_distribution<double> twist(0.0, 0.17);
-    s.supports[1].normal = Eigen::AngleAxisd(twist(rng), t) * d1;
+    s.supports[1].normal = Eigen::AngleAxisd(twist(rng) + lay.far_twist, t) * d1;
   }
   return s;
 }
@@ -140,6 +167,22 @@ std::optional<std::pair<double, double>> HiddenSpan(const std::string& effect,
   return std::nullopt;
 }
 
+std::optional<std::pair<double, double>> ContributionSpan(const RodSpec& with,
+                                                          const RodSpec& without) {
+  RodSimulator a, b;
+  const SimulationResult ra = a.Simulate(with), rb = b.Simulate(without);
+  if (!ra.converged || !rb.converged) return std::nullopt;
+  const Eigen::VectorXd s = UniformArcLengths(with.length, 400);
+  const Polyline pa = SampleCenterline(ra.solution.centerline, s);
+  const Polyline pb = SampleCenterline(rb.solution.centerline, s);
+  const Eigen::VectorXd d = (pa.points - pb.points).colwise().norm().transpose();
+  const double half = 0.5 * d.maxCoeff();
+  Eigen::Index first = 0, last = d.size() - 1;
+  while (first < last && d[first] < half) ++first;
+  while (last > first && d[last] < half) --last;
+  return std::make_pair(s[first], s[last]);
+}
+
 namespace {
 
 // A frictionless support pushes normal to the cable as it finally hangs, its own push and every
@@ -171,7 +214,8 @@ RodSpec WithContactsNormalToTheCable(RodSpec truth) {
 
 }  // namespace
 
-ScannedTruth ScanTruth(const RodSpec& hidden, const RodSpec& told, std::mt19937& rng, bool run) {
+ScannedTruth ScanTruth(const RodSpec& hidden, const RodSpec& told, std::mt19937& rng, bool run,
+                       const ScanQuality& quality) {
   ScannedTruth out;
   RodSimulator sim;
   SimulationResult solved;
@@ -192,10 +236,11 @@ ScannedTruth ScanTruth(const RodSpec& hidden, const RodSpec& told, std::mt19937&
   SyntheticScanSpec ss;
   ss.diameter = truth.material.diameter;
   ss.coverage_deg = 140 + 120 * (rng() % 1000) / 1000.0;
-  ss.noise_sigma = 0.05e-3 + 0.1e-3 * (rng() % 1000) / 1000.0;
-  ss.points = (rng() % 2) ? 8000 : 15000;  // sparse and dense scans
+  ss.noise_sigma = quality.noise_factor * (0.05e-3 + 0.1e-3 * (rng() % 1000) / 1000.0);
+  ss.points = static_cast<int>(quality.point_factor * ((rng() % 2) ? 8000 : 15000));
   const double g0 = (0.2 + 0.5 * (rng() % 1000) / 1000.0) * L;
-  ss.gaps = {Eigen::Vector2d(g0, g0 + 0.04)};
+  ss.gaps = {
+      Eigen::Vector2d(g0, g0 + (quality.gap_fraction > 0 ? quality.gap_fraction * L : 0.04))};
   ss.seed = static_cast<unsigned>(rng());
   if (!run) return out;
   const SyntheticScan scan = MakeSyntheticScan(curve, ss);
@@ -217,8 +262,8 @@ ScannedTruth ScanTruth(const RodSpec& hidden, const RodSpec& told, std::mt19937&
 
 std::optional<ScannedTruth> ScanOrReport(const char* layout, const std::string& label,
                                          const RodSpec& truth, const RodSpec& told,
-                                         std::mt19937& rng, bool run) {
-  ScannedTruth scanned = ScanTruth(truth, told, rng, run);
+                                         std::mt19937& rng, bool run, const ScanQuality& quality) {
+  ScannedTruth scanned = ScanTruth(truth, told, rng, run, quality);
   if (scanned.solved) return scanned;
   std::printf("%-7s %-45s truth solve failed: %s\n", layout, label.c_str(),
               scanned.failure.c_str());
