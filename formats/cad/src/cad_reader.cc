@@ -521,6 +521,7 @@ std::string StepLengthUnit(STEPCAFControl_Reader& reader) {
 Handle(TDocStd_Document) ReadDocument(const std::string& path, bool iges, std::string* unit) {
   Handle(TDocStd_Document) doc = NewXcafDocument();
   const std::lock_guard<std::mutex> lock(OcctExchangeMutex());
+  const ScopedOcctSignals signals;
   if (iges) {
     IGESCAFControl_Reader reader;
     reader.SetNameMode(true);

@@ -7,6 +7,7 @@
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 #include <STEPCAFControl_Controller.hxx>
+#include <OSD.hxx>
 #include <mutex>
 
 namespace cablefit {
@@ -29,6 +30,21 @@ void InitOcctSession() {
 std::mutex& OcctExchangeMutex() {
   static std::mutex mutex;
   return mutex;
+}
+
+namespace {
+// Every signal OSD::SetSignal may take over on Linux: all are given back.
+constexpr int kSignals[ScopedOcctSignals::kCount] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGHUP,
+                                                     SIGINT, SIGQUIT, SIGTRAP, SIGSYS, SIGTERM, SIGXCPU};
+}  // namespace
+
+ScopedOcctSignals::ScopedOcctSignals() {
+  for (int k = 0; k < kCount; ++k) sigaction(kSignals[k], nullptr, &saved_[k]);
+  OSD::SetSignal(OSD_SignalMode_SetUnhandled, false);
+}
+
+ScopedOcctSignals::~ScopedOcctSignals() {
+  for (int k = 0; k < kCount; ++k) sigaction(kSignals[k], &saved_[k], nullptr);
 }
 
 }  // namespace cablefit

@@ -1,6 +1,7 @@
 // Process-wide OCCT set-up shared by the reader, the writer and the sample tool.
 #pragma once
 
+#include <csignal>
 #include <mutex>
 
 namespace cablefit {
@@ -21,5 +22,23 @@ void InitOcctSession();
 /// transfer and write holds this lock; what comes after the transfer (recognition, sweeps) runs
 /// in parallel.
 std::mutex& OcctExchangeMutex();
+
+/// While it lives, an access violation inside OCCT becomes a Standard_Failure at OCCT's nearest
+/// OCC_CATCH_SIGNALS (its transfer code guards each entity so), instead of ending the process:
+/// a corrupt STEP/IGES entity then fails to transfer alone (OCCT's IGES boundary and curve
+/// analysis read and write out of bounds on some damaged files). Signals that already have a
+/// handler (a sanitizer's, a debugger's) keep it; the previous handlers are back afterwards.
+/// Taken under OcctExchangeMutex, so only one is alive at a time.
+class ScopedOcctSignals {
+ public:
+  ScopedOcctSignals();
+  ~ScopedOcctSignals();
+  ScopedOcctSignals(const ScopedOcctSignals&) = delete;
+  ScopedOcctSignals& operator=(const ScopedOcctSignals&) = delete;
+  static constexpr int kCount = 12;
+
+ private:
+  struct sigaction saved_[kCount];
+};
 
 }  // namespace cablefit
