@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cstring>
 #include <map>
 
 #include "breakout_branches.h"
@@ -546,6 +547,11 @@ Handle(TDocStd_Document) ReadDocument(const std::string& path, bool iges, std::s
     }
     if (!reader.Transfer(doc)) throw FileError(path, "STEP transfer failed");
     *unit = StepLengthUnit(reader);
+  }
+  if (const int sig = signals.caught()) {
+    throw FileError(path, std::string(iges ? "the IGES reader" : "the STEP reader") +
+                              " crashed on this file (signal " + std::to_string(sig) + ": " +
+                              ::strsignal(sig) + "); the file is corrupt");
   }
   return doc;
 }

@@ -24,11 +24,13 @@ void InitOcctSession();
 std::mutex& OcctExchangeMutex();
 
 /// While it lives, an access violation inside OCCT becomes a Standard_Failure at OCCT's nearest
-/// OCC_CATCH_SIGNALS (its transfer code guards each entity so), instead of ending the process:
-/// a corrupt STEP/IGES entity then fails to transfer alone (OCCT's IGES boundary and curve
-/// analysis read and write out of bounds on some damaged files). Signals that already have a
-/// handler (a sanitizer's, a debugger's) keep it; the previous handlers are back afterwards.
-/// Taken under OcctExchangeMutex, so only one is alive at a time.
+/// OCC_CATCH_SIGNALS (its transfer code guards each entity so), instead of ending the process,
+/// and caught() says it happened: OCCT's IGES boundary and curve analysis read and write out of
+/// bounds on some damaged files, and whether that crashed depended on the heap's layout. After
+/// such a fault the read is not to be trusted (memory may be overwritten): the reader fails the
+/// file as the crash probe does. Signals that already have a handler (a sanitizer's, a
+/// debugger's) keep it; the previous handlers are back afterwards. Taken under
+/// OcctExchangeMutex, so only one is alive at a time.
 class ScopedOcctSignals {
  public:
   ScopedOcctSignals();
@@ -36,6 +38,8 @@ class ScopedOcctSignals {
   ScopedOcctSignals(const ScopedOcctSignals&) = delete;
   ScopedOcctSignals& operator=(const ScopedOcctSignals&) = delete;
   static constexpr int kCount = 12;
+  /// The signal number of the first fault OCCT caught while this lived, or 0.
+  int caught() const;
 
  private:
   struct sigaction saved_[kCount];
