@@ -63,6 +63,9 @@ ScopedOcctSignals::ScopedOcctSignals() {
   g_caught.store(0);
   for (int k = 0; k < kCount; ++k) sigaction(kSignals[k], nullptr, &saved_[k]);
   OSD::SetSignal(OSD_SignalMode_SetUnhandled, false);
+  // Only the faults are OCCT's to catch: Ctrl-C or a kill during a transfer must still end the
+  // process, not fail one entity and let the read go on without it.
+  for (int k = kFaults; k < kCount; ++k) sigaction(kSignals[k], &saved_[k], nullptr);
   for (int k = 0; k < kFaults; ++k) {
     struct sigaction now {};
     sigaction(kSignals[k], nullptr, &now);
