@@ -67,11 +67,10 @@ int RunSimulate(const SimulateArgs& a) {
   const Polyline out = SampleCenterline(r.solution.centerline,
                                         UniformArcLengths(rc.nominal.length, a.samples));
   WriteCenterlineCsv((dir / "centerline.csv").string(), out);
-  json::Json solution = SolutionToJson(rc.name, rc.nominal, r);
-  std::vector<std::pair<std::string, std::string>> sources = {{"case", rc.case_file},
-                                                              {"initial", a.initial}};
-  solution["provenance"] = ProvenanceJson(sources);
-  json::WriteJsonFile((dir / "solution.json").string(), solution);
+  const std::vector<std::pair<std::string, std::string>> sources = {{"case", rc.case_file},
+                                                                    {"initial", a.initial}};
+  WriteFileAtomically((dir / "solution.json").string(),
+                      SolutionJsonText(rc.name, rc.nominal, r, ProvenanceJson(sources)));
   std::printf("%s: %s, %d elements, %d Newton iterations, est. error %.2g mm, %s, %.1f ms\n",
               TerminalSafe(rc.name).c_str(), r.converged ? "converged" : "NOT CONVERGED",
               r.level_elements.empty() ? 0 : r.level_elements.back(), r.newton_iterations,

@@ -1,57 +1,76 @@
 #include "cablefit/app/output/solution_json.h"
 
-namespace cablefit::addin {
-using namespace cablefit::json;
+#include "cablefit/formats/json_writer.h"
 
-json::Json SolutionToJson(const std::string& case_name, const RodSpec& spec, const SimulationResult& r) {
+namespace cablefit::addin {
+
+std::string SolutionJsonText(const std::string& case_name, const RodSpec& spec,
+                             const SimulationResult& r, const json::Json& provenance) {
   const RodSolution& sol = r.solution;
   const StaticsSummary& sum = sol.summary;
-  Json j;
-  j["format"] = "cablefit-solution/1";
-  j["case"] = case_name;
-  j["length"] = spec.length;
-  Json reactions = Json::array();
+  json::JsonWriter w;
+  w.BeginObject();
+  w.Key("format").String("cablefit-solution/1");
+  w.Key("case").String(case_name);
+  w.Key("length").Number(spec.length);
+  w.Key("reactions").BeginArray();
   for (size_t k = 0; k < sol.reactions.size(); ++k) {
     const SupportReaction& re = sol.reactions[k];
-    reactions.push_back({{"index", k},
-                         {"kind", ToString(re.kind)},
-                         {"s", re.s},
-                         {"force", ToJson(re.force)},
-                         {"moment", ToJson(re.moment)}});
+    w.BeginObject();
+    w.Key("index").Integer(static_cast<long long>(k));
+    w.Key("kind").String(ToString(re.kind));
+    w.Key("s").Number(re.s);
+    w.Key("force").Numbers(re.force);
+    w.Key("moment").Numbers(re.moment);
+    w.EndObject();
   }
-  j["reactions"] = reactions;
-  j["summary"] = {{"termination", ToString(sum.termination)},
-                  {"converged", r.converged},
-                  {"message", sum.message},
-                  {"iterations", r.newton_iterations},
-                  {"continuation_steps", sum.continuation_steps},
-                  {"residual", {{"gradient", NumberOrNull(sum.gradient_norm)},
-                                {"constraint", NumberOrNull(sum.constraint_norm)}}},
-                  {"energy", NumberOrNull(sum.final_energy)},
-                  {"elastic_energy", NumberOrNull(sol.elastic_energy)},
-                  {"stable", sum.stable},
-                  {"unstable_directions", sum.negative_directions},
-                  {"elements", r.level_elements.empty() ? 0 : r.level_elements.back()},
-                  {"levels", r.level_elements},
-                  {"estimated_error", NumberOrNull(r.estimated_error)},
-                  {"accuracy_met", r.accuracy_met},
-                  {"seconds", r.seconds}};
-  j["twist_angle"] = NumberOrNull(sol.twist_angle);
+  w.EndArray();
+  w.Key("summary").BeginObject();
+  w.Key("termination").String(ToString(sum.termination));
+  w.Key("converged").Bool(r.converged);
+  w.Key("message").String(sum.message);
+  w.Key("iterations").Integer(r.newton_iterations);
+  w.Key("continuation_steps").Integer(sum.continuation_steps);
+  w.Key("residual").BeginObject();
+  w.Key("gradient").Number(sum.gradient_norm);
+  w.Key("constraint").Number(sum.constraint_norm);
+  w.EndObject();
+  w.Key("energy").Number(sum.final_energy);
+  w.Key("elastic_energy").Number(sol.elastic_energy);
+  w.Key("stable").Bool(sum.stable);
+  w.Key("unstable_directions").Integer(sum.negative_directions);
+  w.Key("elements").Integer(r.level_elements.empty() ? 0 : r.level_elements.back());
+  w.Key("levels").Integers(r.level_elements);
+  w.Key("estimated_error").Number(r.estimated_error);
+  w.Key("accuracy_met").Bool(r.accuracy_met);
+  w.Key("seconds").Number(r.seconds);
+  w.EndObject();
+  w.Key("twist_angle").Number(sol.twist_angle);
   // Profiles of the finest level: frames and internal force at element midpoints, internal
   // moment at the frame-sample edges.
-  Json frames = Json::array();
-  for (size_t i = 0; i < sol.frames.size(); ++i)
-    frames.push_back({{"s", sol.frame_s[static_cast<int>(i)]},
-                      {"d1", ToJson(sol.frames[i].d1)},
-                      {"d2", ToJson(sol.frames[i].d2)},
-                      {"d3", ToJson(sol.frames[i].d3)},
-                      {"force", ToJson(sol.internal_force.col(static_cast<int>(i)))}});
-  j["frames"] = frames;
-  Json moments = Json::array();
-  for (int e = 0; e < sol.internal_moment.cols(); ++e)
-    moments.push_back({{"s", sol.moment_s[e]}, {"moment", ToJson(sol.internal_moment.col(e))}});
-  j["moments"] = moments;
-  return j;
+  w.Key("frames").BeginArray();
+  for (size_t i = 0; i < sol.frames.size(); ++i) {
+    const int c = static_cast<int>(i);
+    w.BeginObject();
+    w.Key("s").Number(sol.frame_s[c]);
+    w.Key("d1").Numbers(sol.frames[i].d1);
+    w.Key("d2").Numbers(sol.frames[i].d2);
+    w.Key("d3").Numbers(sol.frames[i].d3);
+    w.Key("force").Numbers(sol.internal_force.col(c));
+    w.EndObject();
+  }
+  w.EndArray();
+  w.Key("moments").BeginArray();
+  for (int e = 0; e < sol.internal_moment.cols(); ++e) {
+    w.BeginObject();
+    w.Key("s").Number(sol.moment_s[e]);
+    w.Key("moment").Numbers(sol.internal_moment.col(e));
+    w.EndObject();
+  }
+  w.EndArray();
+  w.Key("provenance").Tree(provenance);
+  w.EndObject();
+  return w.Finish();
 }
 
 }  // namespace cablefit::addin

@@ -8,7 +8,10 @@
 
 namespace cablefit::addin {
 
-/// The `cablefit-solution/1` object for a simulated case.
-json::Json SolutionToJson(const std::string& case_name, const RodSpec& spec, const SimulationResult& r);
+/// The `cablefit-solution/1` text for a simulated case, with `provenance` as its last field.
+/// Written straight to text: the profiles hold thousands of numbers and a simulate is meant to
+/// take milliseconds as a whole process.
+std::string SolutionJsonText(const std::string& case_name, const RodSpec& spec,
+                             const SimulationResult& r, const json::Json& provenance);
 
 }  // namespace cablefit::addin
