@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cablefit/core/network/network_model.h"
+#include "cablefit/core/rod/rod_state.h"
 
 namespace cablefit {
 
@@ -24,5 +25,12 @@ RodSpec BranchRodSpec(const NetworkSpec& spec, int branch);
 std::vector<Eigen::Vector4d> DrawnFrames(const NetworkModel& net,
                                          const std::vector<Polyline>* routes = nullptr,
                                          const std::vector<Eigen::Matrix3Xd>* normals = nullptr);
+
+/// A finer level's start: `from_state` (an equilibrium of `from`, a compilation of the same spec
+/// on other elements; contact supports beyond the spec's may follow) carried to `to`: element
+/// frames slerped along each branch, support and junction frames, support poses and multipliers
+/// kept. False (and `state` untouched) when the two do not match.
+bool TransferNetworkState(const NetworkModel& from, const RodState& from_state,
+                          const NetworkModel& to, RodState* state);
 
 }  // namespace cablefit

@@ -448,8 +448,11 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   const std::vector<char> attached = EnteredInDrawing(base, info, spec.obstacles);
   const ObstacleField field(spec.obstacles, attached);
   const bool warm = options.initial_routes.size() == spec.branches.size();
-  RodState st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr,
-                                  warm ? &options.initial_normals : nullptr);
+  RodState st;
+  if (!options.start || !TransferNetworkState(options.start->model, options.start->state, base, &st))
+    st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr,
+                           warm ? &options.initial_normals : nullptr);
+
   std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;
@@ -486,6 +489,8 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   }
   sol.summary.iterations = iterations;
   sol.num_elements = net.rod.num_elements;
+  if (options.keep_start && sol.summary.converged())
+    sol.start = std::make_shared<const NetworkStart>(NetworkStart{base, st});
   if (!field.empty()) sol.max_penetration = MaxPenetration(net, st, field, info);
   ExtractLoads(net, st, holds, &sol);
   sol.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -24,6 +24,7 @@ NetworkSolution CoarseStart(const NetworkSpec& spec, const NetworkOptions& optio
   NetworkOptions coarse = options;
   coarse.refinement = 0;
   coarse.element_length = kCoarseFactor * options.element_length;
+  coarse.keep_start = true;
   NetworkSolution sol = SolveNetwork(spec, coarse);
   if (!sol.converged()) return {};
   return sol;
@@ -42,6 +43,7 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
   const RefinedSolution refined = SolveRefined(plan, [&](int level) {
     NetworkOptions at = options;
     at.refinement = level;
+    at.keep_start = true;
     // A finer level starts from the coarser level's equilibrium: a few Newton steps instead of
     // a cold solve from the drawing (on a 27-branch harness 35-51 iterations per level).
     // Contact can defeat that start (nodes between the coarse ones cut into an edge the coarse
@@ -49,14 +51,17 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
     if (level > 0 && out.finest.converged()) {
       at.initial_routes = out.finest.branches;
       at.initial_normals = out.finest.element_normals;
+      at.start = out.finest.start;
     } else if (level == 0 && coarse.converged()) {
       at.initial_routes = coarse.branches;
       at.initial_normals = coarse.element_normals;
+      at.start = coarse.start;
     }
     out.finest = SolveNetwork(spec, at);
     if (!out.finest.converged() && !at.initial_routes.empty()) {
       at.initial_routes.clear();
       at.initial_normals.clear();
+      at.start.reset();
       out.finest = SolveNetwork(spec, at);
     }
     out.level_elements.push_back(out.finest.num_elements);
@@ -85,6 +90,7 @@ NetworkSimulation SimulateNetwork(const NetworkSpec& spec, const RefinementPlan&
     out.estimated_error = refined.levels.EstimatedError().total();
     out.accuracy_met = out.estimated_error <= plan.accuracy;
   }
+  out.finest.start.reset();  // the levels are done: no model copies travel with the result
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -94,6 +94,42 @@ TEST(Network, AWarmStartWithTheElementNormalsKeepsTheEquilibriumTwist) {
               1e-9 * length);
 }
 
+TEST(Network, AFinerLevelStartsFromTheCoarserEquilibriumItself) {
+  const double length = 0.3;
+  NetworkSpec spec = YJunction(length);
+  for (int k = 0; k < 3; ++k) {
+    SupportSpec& clamp = spec.branches[k].supports[0];
+    clamp.normal = Eigen::AngleAxisd(0.4 * (k + 1), clamp.tangent) * clamp.tangent.unitOrthogonal();
+  }
+  NetworkOptions opt;
+  opt.element_length = 0.01;
+  opt.keep_start = true;
+  const NetworkSolution coarse = SolveNetwork(spec, opt);
+  ASSERT_TRUE(coarse.converged()) << coarse.summary.BriefReport();
+  ASSERT_TRUE(coarse.start);
+  // The same elements: the start is the equilibrium, frames, supports and multipliers alike.
+  NetworkOptions same = opt;
+  same.start = coarse.start;
+  EXPECT_EQ(SolveNetwork(spec, same).summary.iterations, 0);
+  // Finer elements: at most as many Newton steps as from the start drawn through the coarse
+  // nodes, and the same equilibrium.
+  NetworkOptions fine = opt;
+  fine.refinement = 1;
+  fine.initial_routes = coarse.branches;
+  fine.initial_normals = coarse.element_normals;
+  const NetworkSolution from_routes = SolveNetwork(spec, fine);
+  fine.start = coarse.start;
+  const NetworkSolution from_state = SolveNetwork(spec, fine);
+  ASSERT_TRUE(from_routes.converged() && from_state.converged());
+  EXPECT_LE(from_state.summary.iterations, from_routes.summary.iterations);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT((from_state.branches[k].points - from_routes.branches[k].points).cwiseAbs().maxCoeff(),
+              1e-9 * length);
+  // Without keep_start no model copy travels with a solution.
+  fine.keep_start = false;
+  EXPECT_FALSE(SolveNetwork(spec, fine).start);
+}
+
 TEST(Network, YJunctionIsSymmetricAndItsJunctionBalances) {
   const double length = 0.3;
   NetworkOptions opt;

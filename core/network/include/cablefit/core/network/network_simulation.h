@@ -4,6 +4,7 @@
 // follow the nearest surface point until nothing changes).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,12 @@
 #include "cablefit/core/solver/statics_solver.h"
 
 namespace cablefit {
+
+/// An equilibrium as the solver holds it: the start of a finer level of the same network.
+struct NetworkStart {
+  NetworkModel model;  // without contact rows
+  RodState state;      // may hold contact supports beyond model's
+};
 
 struct NetworkOptions {
   double element_length = 0.01;  // [m]
@@ -37,6 +44,15 @@ struct NetworkOptions {
   /// coarser level's shape cost the next level 10-12 Newton iterations (movo sample, 5 x the
   /// energy of the equilibrium at the start), its own twist 3-5.
   std::vector<Eigen::Matrix3Xd> initial_normals;
+  /// A coarser level's equilibrium of the same spec (NetworkSolution::start): the solve starts
+  /// from its frames, slerped to this model's elements, and from its support forces. Preferred
+  /// over initial_routes: a start drawn through the coarse nodes alone lost the supports' forces
+  /// and the frames at junctions and clamps; on a 1000-segment harness with short connector
+  /// stubs its first Newton Hessian had hundreds of unstable directions, and the level took 217
+  /// iterations instead of a few.
+  std::shared_ptr<const NetworkStart> start;
+  /// Keep the equilibrium in NetworkSolution::start (a copy of the compiled model and state).
+  bool keep_start = false;
 
   bool IsValid(std::string* why) const;
 };
@@ -76,6 +92,8 @@ struct NetworkSolution {
   /// wire in its connector. Held there by the support, they are no contact surfaces for it
   /// (pushing it out would fight the clamp).
   std::vector<int> attached_obstacles;
+  /// The equilibrium itself, for a finer level's start (with NetworkOptions::keep_start).
+  std::shared_ptr<const NetworkStart> start;
   int contact_rounds = 0;
   int num_elements = 0;
   bool converged() const { return summary.converged(); }

@@ -1,0 +1,82 @@
+// A finer level's start from a coarser level's equilibrium of the same network, frame by frame.
+#include <Eigen/Geometry>
+#include <algorithm>
+
+#include "network_parts.h"
+#include "cablefit/core/rod/internal/support_targets.h"
+
+namespace cablefit {
+namespace {
+
+Eigen::Quaterniond AsQuaternion(const Eigen::Vector4d& q) {
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+}
+
+}  // namespace
+
+bool TransferNetworkState(const NetworkModel& from, const RodState& from_state,
+                          const NetworkModel& to, RodState* state) {
+  const RodModel& fm = from.rod;
+  const RodModel& tm = to.rod;
+  if (from.branches.size() != to.branches.size() || from.junctions.size() != to.junctions.size() ||
+      from.num_spec_supports != to.num_spec_supports ||
+      from_state.q.size() != fm.items.size() ||
+      static_cast<int>(from_state.support_position.size()) < from.num_spec_supports ||
+      fm.num_constraints != tm.num_constraints || from_state.lambda.size() < fm.num_constraints)
+    return false;
+  RodState st;
+  st.q.assign(tm.items.size(), Eigen::Vector4d(1, 0, 0, 0));
+  // Elements: the coarser elements' frames at their midpoints, slerped to each finer midpoint
+  // of the same branch (a coarse element's tangent is its chord, so the finer chain passes
+  // through the coarse nodes up to the curvature's second-order term).
+  for (size_t b = 0; b < to.branches.size(); ++b) {
+    const internal::BranchLayout& fl = from.branches[b];
+    const internal::BranchLayout& tl = to.branches[b];
+    if (fl.elements.empty() || tl.elements.empty()) return false;
+    const double scale = tl.node_s[tl.node_s.size() - 1] /
+                         std::max(1e-300, fl.node_s[fl.node_s.size() - 1]);
+    std::vector<double> mids(fl.elements.size());
+    for (size_t k = 0; k < fl.elements.size(); ++k)
+      mids[k] = 0.5 * (fl.node_s[k] + fl.node_s[k + 1]) * scale;
+    for (size_t k = 0; k < tl.elements.size(); ++k) {
+      const double s = 0.5 * (tl.node_s[k] + tl.node_s[k + 1]);
+      const auto up = std::upper_bound(mids.begin(), mids.end(), s);
+      const int j = std::clamp(static_cast<int>(up - mids.begin()) - 1, 0,
+                               static_cast<int>(mids.size()) - 1);
+      Eigen::Quaterniond q = AsQuaternion(from_state.q[fm.element_item[fl.elements[j]]]);
+      if (j + 1 < static_cast<int>(mids.size()) && s > mids[j]) {
+        const double w = (s - mids[j]) / (mids[j + 1] - mids[j]);
+        q = q.slerp(w, AsQuaternion(from_state.q[fm.element_item[fl.elements[j + 1]]]));
+      }
+      st.q[tm.element_item[tl.elements[k]]] = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+    }
+  }
+  // Support and junction frames: the same ones as in the coarser equilibrium.
+  for (size_t i = 0; i < tm.items.size(); ++i) {
+    const RodItem& it = tm.items[i];
+    if (it.is_element || it.junction >= 0) continue;
+    if (it.support >= from.num_spec_supports) return false;
+    const int item = fm.supports[it.support].item;
+    if (item < 0) return false;
+    st.q[i] = from_state.q[item];
+  }
+  for (size_t j = 0; j < to.junctions.size(); ++j) {
+    if (to.junctions[j].item < 0) continue;
+    if (from.junctions[j].item < 0) return false;
+    st.q[to.junctions[j].item] = from_state.q[from.junctions[j].item];
+  }
+  internal::AlignQuaternionSigns(tm, &st);
+  // The spec's supports keep their poses and multipliers (contact rows are not carried: the
+  // finer level finds its own contact set).
+  st.lambda = from_state.lambda.head(tm.num_constraints);
+  st.support_position.assign(from_state.support_position.begin(),
+                             from_state.support_position.begin() + to.num_spec_supports);
+  st.support_q.assign(from_state.support_q.begin(),
+                      from_state.support_q.begin() + to.num_spec_supports);
+  st.load_factor = from_state.load_factor;
+  st.natural_factor = from_state.natural_factor;
+  *state = std::move(st);
+  return true;
+}
+
+}  // namespace cablefit
