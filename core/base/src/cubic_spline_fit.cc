@@ -162,9 +162,16 @@ std::optional<CubicSpline> FitWithPoles(const Eigen::Matrix3Xd& q, std::vector<d
                                         double tolerance, double* error) {
   const int n = static_cast<int>(q.cols());
   CubicSpline s;
-  // Interior knots by eq. 9.69: every span between them holds at least one parameter.
+  // Interior knots by eq. 9.69: every span between them holds at least one parameter. As many
+  // poles as points is interpolation, which needs the averaged knots of eq. 9.8 instead: 9.69's
+  // leave a span whose parameters pin no pole (Schoenberg-Whitney fails), and the curve through
+  // every point looped metres away between two of them.
   const double d = static_cast<double>(n) / (m - kDegree);
   for (int j = 1; j < m - kDegree; ++j) {
+    if (m == n) {
+      s.interior_knots.push_back((u[j] + u[j + 1] + u[j + 2]) / 3.0);
+      continue;
+    }
     const int i = static_cast<int>(j * d);
     const double alpha = j * d - i;
     s.interior_knots.push_back((1.0 - alpha) * u[i - 1] + alpha * u[i]);
@@ -198,6 +205,20 @@ std::optional<CubicSpline> FitWithPoles(const Eigen::Matrix3Xd& q, std::vector<d
       *error = distance;
     }
     if (stalled) break;
+  }
+  // Every point can lie on the curve while a pole that few points pin swings the curve far
+  // away between two of them (a relaxed harness segment's spine once looped 3 m out between
+  // points 22 mm apart, and no sweep could follow it). Between neighbours the curve may bulge
+  // by at most a half circle over their chord; more counts as the fit's error.
+  std::vector<Eigen::Vector3d> final_tangents;
+  double at_points = 0.0;
+  Project(q, s.poles, knots, &u, &final_tangents, &at_points);
+  for (int k = 0; k + 1 < n; ++k) {
+    Eigen::Vector3d c, t;
+    PointAndTangent(s.poles, knots, 0.5 * (u[k] + u[k + 1]), &c, &t);
+    const double bulge = (c - 0.5 * (q.col(k) + q.col(k + 1))).norm() -
+                         0.5 * (q.col(k + 1) - q.col(k)).norm();
+    *error = std::max(*error, bulge);
   }
   return s;
 }

@@ -101,6 +101,40 @@ TEST(CubicSplineFit, AStraightLineTakesFourPolesOnIt) {
   }
 }
 
+// A relaxed harness segment's nodes [mm] (18 points ~22 mm apart on a gentle curve): the fit
+// once met its tolerance at every point with a pole 3 m away, the curve looping out between
+// the first points; no tube could be swept along it.
+TEST(CubicSplineFit, TheCurveDoesNotSwingAwayBetweenItsPoints) {
+  const double rows[][3] = {
+      {789.690068, -339.347588, -139.359423}, {803.877515, -355.818354, -130.372795},
+      {819.604878, -371.010073, -121.708879}, {836.993596, -384.506339, -113.429573},
+      {856.044579, -395.868909, -105.627278}, {876.621805, -404.667042, -98.418744},
+      {898.448665, -410.516366, -91.933846},  {921.121921, -413.121188, -86.300332},
+      {944.144878, -412.311725, -81.626788},  {966.976664, -408.067436, -77.986934},
+      {989.089721, -400.520227, -75.408398},  {1010.025100, -389.936334, -73.868080},
+      {1029.627221, -376.949237, -73.244092}, {1049.052118, -363.673324, -73.118695},
+      {1068.492546, -350.422931, -73.418125}, {1087.890633, -337.127051, -74.143250},
+      {1107.187769, -323.715089, -75.296370}, {1126.323579, -310.117461, -76.881138}};
+  const int n = static_cast<int>(std::size(rows));
+  Eigen::Matrix3Xd p(3, n);
+  for (int i = 0; i < n; ++i) p.col(i) << rows[i][0], rows[i][1], rows[i][2];
+  const std::optional<CubicSpline> fit = FitCubicSpline(p, 0.005, n);
+  ASSERT_TRUE(fit.has_value());
+  double worst = 0.0;  // [mm] the curve's largest distance from the polyline of the points
+  for (int k = 0; k <= 4000; ++k) {
+    const Eigen::Vector3d c = fit->At(k / 4000.0);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i + 1 < n; ++i) {
+      const Eigen::Vector3d a = p.col(i), ab = p.col(i + 1) - p.col(i);
+      const double t = std::clamp((c - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (a + t * ab - c).norm());
+    }
+    worst = std::max(worst, nearest);
+  }
+  // The chords' sagitta on this curve is a fraction of a millimetre.
+  EXPECT_LT(worst, 1.0);
+}
+
 TEST(CubicSplineFit, InputsItCannotFitGiveNoFit) {
   Eigen::Matrix3Xd p = Helix(20);
   EXPECT_FALSE(FitCubicSpline(p.leftCols(3), 1e-3, 10).has_value());  // fewer than 4 points
