@@ -1,7 +1,6 @@
 #include "font.h"
 
-#include <ft2build.h>
-#include FT_FREETYPE_H
+#include "freetype_api.h"
 
 #include <cmath>
 #include <filesystem>
@@ -53,11 +52,12 @@ Font& Font::Get(FontWeight weight) {
 Font::Font(const std::string& path) {
   if (!std::filesystem::exists(path))
     throw FileError(path, "font not found (install the Debian package fonts-dejavu-core)");
+  const FreeTypeApi& ft = FreeType();
   FT_Library library = nullptr;
-  if (FT_Init_FreeType(&library) != 0) throw std::runtime_error("FreeType initialisation failed");
+  if (ft.Init_FreeType(&library) != 0) throw std::runtime_error("FreeType initialisation failed");
   FT_Face face = nullptr;
-  if (FT_New_Face(library, path.c_str(), 0, &face) != 0) {
-    FT_Done_FreeType(library);
+  if (ft.New_Face(library, path.c_str(), 0, &face) != 0) {
+    ft.Done_FreeType(library);
     throw FileError(path, "FreeType cannot read this font");
   }
   library_ = library;
@@ -65,18 +65,20 @@ Font::Font(const std::string& path) {
 }
 
 Font::~Font() {
-  if (face_) FT_Done_Face(static_cast<FT_Face>(face_));
-  if (library_) FT_Done_FreeType(static_cast<FT_Library>(library_));
+  // Only a constructed font has a library, and FreeType() was loaded to construct it.
+  if (face_) FreeType().Done_Face(static_cast<FT_Face>(face_));
+  if (library_) FreeType().Done_FreeType(static_cast<FT_Library>(library_));
 }
 
 const Font::Glyph& Font::GlyphFor(char32_t code, int size_px) {
   const auto key = std::make_pair(size_px, code);
   if (auto it = cache_.find(key); it != cache_.end()) return it->second;
   auto face = static_cast<FT_Face>(face_);
-  FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px));
+  const FreeTypeApi& ft = FreeType();
+  ft.Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px));
   Glyph glyph;
   // Light hinting keeps glyph shapes true while snapping stems vertically: crisp small labels.
-  if (FT_Load_Char(face, code, FT_LOAD_RENDER | FT_LOAD_TARGET_LIGHT) == 0) {
+  if (ft.Load_Char(face, code, FT_LOAD_RENDER | FT_LOAD_TARGET_LIGHT) == 0) {
     const FT_GlyphSlot slot = face->glyph;
     glyph.width = static_cast<int>(slot->bitmap.width);
     glyph.rows = static_cast<int>(slot->bitmap.rows);

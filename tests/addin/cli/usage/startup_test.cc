@@ -39,7 +39,8 @@ std::string Slurp(const fs::path& p) {
 TEST(Startup, TheCommandUsersRunLoadsNoCadMeshOrRenderingLibrary) {
   const std::string needed = Output("ldd " + Q(testing::CablefitBinary()) + " 2>&1");
   ASSERT_NE(needed.find("libc.so"), std::string::npos) << needed;
-  for (const char* heavy : {"libTK", "assimp", "OSMesa", "LLVM", "xml2", "gmp", "GL"})
+  // FreeType too: loaded for the first label of a picture (formats/render freetype_api).
+  for (const char* heavy : {"libTK", "assimp", "OSMesa", "LLVM", "xml2", "gmp", "GL", "freetype"})
     EXPECT_EQ(needed.find(heavy), std::string::npos) << heavy << " in\n" << needed;
   // The full executable has the CAD libraries: the split is what keeps them out, not a lighter
   // build. Neither links OSMesa (and with it LLVM): it is loaded for the first 3-D picture.
