@@ -1,6 +1,7 @@
 #include "cablefit/formats/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -90,10 +91,24 @@ bool DurableWrites() { return Durable(); }
 void AtomicFile::Commit() {
   const bool durable = DurableWrites();
   if (durable) SyncFile(temp_, path_);
+  // Without the sync, renaming over an existing file makes ext4 (auto_da_alloc) write the new
+  // file's data out inside rename(): 0.15 ms on an idle disk, up to 8 ms on a busy one, several
+  // times a whole simulate. An old regular file is moved aside first and removed after: never
+  // a half-written file under the name, and a crash in between leaves both whole files.
+  fs::path aside;
+  struct stat old {};
+  if (!durable && ::lstat(path_.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
+    aside = TempPath(fs::path(path_));
+    if (::rename(path_.c_str(), aside.c_str()) != 0) aside.clear();
+  }
   std::error_code ec;
   fs::rename(temp_, path_, ec);
-  if (ec) throw FileError(path_, "cannot replace file: " + ec.message());
+  if (ec) {
+    if (!aside.empty()) (void)::rename(aside.c_str(), path_.c_str());
+    throw FileError(path_, "cannot replace file: " + ec.message());
+  }
   committed_ = true;
+  if (!aside.empty()) (void)::unlink(aside.c_str());
   if (durable) SyncDirectory(fs::path(path_).parent_path());
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -74,6 +75,28 @@ TEST(AtomicFile, TargetThatIsAFolderIsAFileErrorAndLeavesNoTemp) {
   EXPECT_THROW_WITH(WriteFileAtomically((dir / "target").string(), std::string("x")), FileError,
                     "cannot replace");
   EXPECT_EQ(ListDir(dir), std::vector<std::string>{"target"});
+}
+
+// Writes without sync (simulate's) move an old file aside instead of renaming over it: the
+// same outcome, the new contents alone under the name and nothing else left in the folder; a
+// folder in the way is still an error and still there.
+TEST(AtomicFile, UnsyncedReplacementLeavesOnlyTheNewFile) {
+  SetDurableWrites(false);
+  const auto dir = FreshTempDir("io");
+  const auto path = dir / "out.txt";
+  WriteText(path, "old contents that are longer");
+  WriteFileAtomically(path.string(), std::string("new"));
+  WriteFileAtomically(path.string(), std::string("newer"));
+  EXPECT_EQ(ReadText(path), "newer");
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"out.txt"});
+  std::filesystem::create_directories(dir / "target" / "inside");
+  EXPECT_THROW_WITH(WriteFileAtomically((dir / "target").string(), std::string("x")), FileError,
+                    "cannot replace");
+  EXPECT_TRUE(std::filesystem::is_directory(dir / "target" / "inside"));
+  std::vector<std::string> left = ListDir(dir);
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"out.txt", "target"}));
+  SetDurableWrites(true);
 }
 
 // Threads replacing the same file at once each get their own temporary name: every write
