@@ -102,9 +102,11 @@ struct PairStart {
 // placed effect also starts where the other single fit's residual bends (residual_bends.h):
 // the grid of places is the same on every layout, the residual's bends are where this
 // recording's missing effect is. The same effect twice (two curvature spans, two contacts)
-// starts its second copy at the effect's starts away from the fitted first. (A contact also
-// starts where the first-order scan of place_scan.h puts it; those starts are added after the
-// single fits' coarse states are known.)
+// starts its second copy at the effect's starts away from the fitted first. A contact also
+// starts where the first-order scan of place_scan.h puts it (its bends miss it where the other
+// fit took up its kink; its grid, at zero force beside a fit that absorbed part of it, moves
+// little in a screening's few iterations); those starts are added once the single fits' coarse
+// states are known.
 std::vector<PairStart> PairStarts(const EffectModel& ma, const Fit& fa, const EffectModel& mb,
                                   const Fit& fb, bool same_model, const FitContext& ctx) {
   const double length = ctx.length;

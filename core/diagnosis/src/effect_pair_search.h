@@ -27,6 +27,8 @@ struct PairSearchOptions {
   int refits = 8;             // how many of the best screened pairs are carried to the optimum
   int deep_refits = 3;        // how many of the best pairs DeepenPairSearch fits again
   int backward_checks = 2;    // how many of the best pairs CheckPartsAlone takes apart
+  /// How many of the best pairs with a placed part RelocatePlacedParts checks.
+  int relocated_pairs = 4;
   /// SharePartsOfTheBest refits a pair sharing a part with the best one when its cost is within
   /// this factor of the best's.
   double shared_part_range = 100.0;
