@@ -39,7 +39,8 @@ std::vector<int> BestSeparatedPlaces(const std::vector<double>& cost,
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(cost[static_cast<size_t>(i)])) continue;
     // A local least among its neighbours along the cable (the places are in order).
-    const bool below_left = i == 0 || !(cost[static_cast<size_t>(i - 1)] < cost[static_cast<size_t>(i)]);
+    const bool below_left =
+        i == 0 || !(cost[static_cast<size_t>(i - 1)] < cost[static_cast<size_t>(i)]);
     const bool below_right =
         i + 1 == n || !(cost[static_cast<size_t>(i + 1)] < cost[static_cast<size_t>(i)]);
     if (below_left && below_right) order.push_back(i);
@@ -52,8 +53,8 @@ std::vector<int> BestSeparatedPlaces(const std::vector<double>& cost,
     if (static_cast<int>(taken.size()) >= count) break;
     bool near = false;
     for (int t : taken)
-      near = near || std::abs(where[static_cast<size_t>(i)] - where[static_cast<size_t>(t)]) <
-                         separation;
+      near = near ||
+             std::abs(where[static_cast<size_t>(i)] - where[static_cast<size_t>(t)]) < separation;
     if (!near) taken.push_back(i);
   }
   return taken;
@@ -64,7 +65,8 @@ std::vector<Eigen::VectorXd> ScanPlaces(const FitContext& ctx, const EffectModel
                                         const Eigen::VectorXd& fitted_x, const FitPoint& point,
                                         int count, const std::vector<PlaceExclusion>& exclusions,
                                         int* solves) {
-  CABLEFIT_CHECK(pair.is_combination() && (fitted == 0 || fitted == 1), "a pair and one of its parts");
+  CABLEFIT_CHECK(pair.is_combination() && (fitted == 0 || fitted == 1),
+                 "a pair and one of its parts");
   const int placed = 1 - fitted;
   const EffectModel& fm = singles[static_cast<size_t>(pair.parts[static_cast<size_t>(fitted)])];
   const EffectModel& pm = singles[static_cast<size_t>(pair.parts[static_cast<size_t>(placed)])];
@@ -100,7 +102,8 @@ std::vector<Eigen::VectorXd> ScanPlaces(const FitContext& ctx, const EffectModel
       Eigen::VectorXd r;
       ++*solves;
       ok = FitOffsets(ctx, &sim, pair.apply(xa), &r) && r.size() == point.offsets.size();
-      if (ok) columns.col(nf + static_cast<Eigen::Index>(a)) = (r - point.offsets) * (pm.scale[i] / h);
+      if (ok)
+        columns.col(nf + static_cast<Eigen::Index>(a)) = (r - point.offsets) * (pm.scale[i] / h);
     }
     if (!ok) continue;
     const LinearisedStep step = DampedGaussNewton(point.offsets, columns);

@@ -32,12 +32,12 @@ void RelocatePlacedParts(const FitContext& ctx, const std::vector<RodSimulator>&
   for (size_t k = 0; k < search->fits.size(); ++k) {
     const EffectModel& m = search->models[k];
     bool placed = false;
-    for (int part : m.parts) placed = placed || !singles[static_cast<size_t>(part)].scan_places.empty();
+    for (int part : m.parts)
+      placed = placed || !singles[static_cast<size_t>(part)].scan_places.empty();
     if (search->fits[k].ok && placed) order.push_back(k);
   }
-  std::stable_sort(order.begin(), order.end(), [&](size_t p, size_t q) {
-    return search->fits[p].cost < search->fits[q].cost;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t p, size_t q) { return search->fits[p].cost < search->fits[q].cost; });
   order.resize(std::min(order.size(), static_cast<size_t>(options.relocated_pairs)));
   std::vector<Check> checks;
   for (size_t k : order)
@@ -68,8 +68,8 @@ void RelocatePlacedParts(const FitContext& ctx, const std::vector<RodSimulator>&
     // other copy is.
     std::vector<PlaceExclusion> exclusions = {{x_placed[0], 0.1 * ctx.length}};
     if (m.parts[0] == m.parts[1]) exclusions.push_back({x_other[0], 0.15 * ctx.length});
-    c.starts = ScanPlaces(ctx, m, singles, fitted, x_other, point, kOtherPlaces, exclusions,
-                          &c.solves);
+    c.starts =
+        ScanPlaces(ctx, m, singles, fitted, x_other, point, kOtherPlaces, exclusions, &c.solves);
   });
   // 2. The pair refitted from every place found, on the fine level.
   struct Refit {
