@@ -60,6 +60,11 @@ double EvaluateFitCost(const FitContext& ctx, RodSimulator sim, const RodSpec& s
   return cost;
 }
 
+bool FitOffsets(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec,
+                Eigen::VectorXd* offsets) {
+  return Residual(ctx, sim, spec, offsets);
+}
+
 FitPoint EvaluateFitPoint(const FitContext& ctx, RodSimulator sim, const EffectModel& model,
                           const Eigen::VectorXd& x) {
   FitPoint p{std::move(sim), {}, {}, 1, false};

@@ -48,6 +48,11 @@ struct Fit {
 double EvaluateFitCost(const FitContext& ctx, RodSimulator sim, const RodSpec& spec,
                        Eigen::VectorXd* offsets = nullptr, RodSolution* solution = nullptr);
 
+/// The thinned points' offsets (3n [m]) from `spec` solved warm from `sim` by Newton alone, no
+/// continuation (a small change of the spec `sim` is at); false when that solve fails.
+bool FitOffsets(const FitContext& ctx, RodSimulator* sim, const RodSpec& spec,
+                Eigen::VectorXd* offsets);
+
 struct FitOptions {
   int max_iterations = 30;  // Levenberg-Marquardt iterations per start
   int threads = 1;          // the starts run in parallel, with the same result as on one

@@ -9,6 +9,7 @@
 #include "cablefit/core/base/errors.h"
 #include "cablefit/core/base/parallel_for.h"
 #include "effect_combination.h"
+#include "place_scan.h"
 #include "residual_bends.h"
 
 namespace cablefit {
@@ -101,7 +102,11 @@ struct PairStart {
 // placed effect also starts where the other single fit's residual bends (residual_bends.h):
 // the grid of places is the same on every layout, the residual's bends are where this
 // recording's missing effect is. The same effect twice (two curvature spans, two contacts)
-// starts its second copy at the effect's starts away from the fitted first.
+// starts its second copy at the effect's starts away from the fitted first. A contact also
+// starts where the first-order scan of place_scan.h puts it (its bends miss it where the other
+// fit took up its kink; its grid, at zero force beside a fit that absorbed part of it, moves
+// little in a screening's few iterations); those starts are added once the single fits' coarse
+// states are known.
 std::vector<PairStart> PairStarts(const EffectModel& ma, const Fit& fa, const EffectModel& mb,
                                   const Fit& fb, bool same_model, const FitContext& ctx) {
   const double length = ctx.length;
@@ -161,6 +166,44 @@ LmStart KnownPairStart(const EffectModel& m, const std::vector<EffectModel>& sin
   return st;
 }
 
+// A pair's start whose entry in the start kinds is kWarmStart + part: solved from that part's
+// single fit's coarse state, but with both parts away from it (a scanned place).
+constexpr int kWarmStart = 2;
+
+// How many places a scan starts a placed effect at.
+constexpr int kScannedPlaces = 2;
+
+// A scan of where a placed part of `pair` belongs, beside part `fitted` at its single fit.
+struct ScanTask {
+  int pair = 0;
+  int fitted = 0;
+  std::vector<PlaceExclusion> exclusions;  // the same effect's place, where fitted already
+};
+
+// Every pair with a part that has scan places, scanned beside its other part's single fit; the
+// same effect twice is scanned once, away from its first copy (as PairStarts starts it).
+std::vector<ScanTask> ScanTasks(const std::vector<EffectModel>& pairs,
+                                const std::vector<EffectModel>& singles,
+                                const std::vector<Fit>& single_fits, double length) {
+  std::vector<ScanTask> tasks;
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    const EffectModel& m = pairs[k];
+    for (int placed = 0; placed < 2; ++placed) {
+      const int fitted = 1 - placed;
+      const int single = m.parts[static_cast<size_t>(fitted)];
+      if (singles[static_cast<size_t>(m.parts[static_cast<size_t>(placed)])].scan_places.empty())
+        continue;
+      ScanTask t{static_cast<int>(k), fitted, {}};
+      if (m.parts[0] == m.parts[1]) {
+        if (placed == 0) continue;
+        t.exclusions.push_back({single_fits[static_cast<size_t>(single)].x[0], 0.15 * length});
+      }
+      tasks.push_back(t);
+    }
+  }
+  return tasks;
+}
+
 }  // namespace
 
 PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulator>& bases,
@@ -197,7 +240,8 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
   auto branch_of = [&](const EffectModel& m) {
     return single_fits[static_cast<size_t>(m.parts[0])].branch;
   };
-  // 1. The single fits' states on the coarse level, on the branches of the pairs they start.
+  // 1. The single fits' states on the coarse level, on the branches of the pairs they start or
+  //    scan from.
   std::map<PointKey, FitPoint> points;
   for (int k = 0; k < n; ++k)
     for (int fitted : fitted_parts[static_cast<size_t>(k)])
@@ -205,6 +249,11 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
         const EffectModel& m = out.models[static_cast<size_t>(k)];
         points[{m.parts[static_cast<size_t>(fitted)], branch_of(m)}];
       }
+  const std::vector<ScanTask> scans = ScanTasks(out.models, singles, single_fits, ctx.length);
+  for (const ScanTask& t : scans) {
+    const EffectModel& m = out.models[static_cast<size_t>(t.pair)];
+    points[{m.parts[static_cast<size_t>(t.fitted)], branch_of(m)}];
+  }
   std::vector<std::pair<const PointKey, FitPoint>*> todo;
   for (auto& entry : points) todo.push_back(&entry);
   ParallelFor(static_cast<int>(todo.size()), options.threads, [&](int t) {
@@ -232,6 +281,27 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     point.forward_solves = solves;
   });
   for (const auto& [key, point] : points) out.forward_solves += point.forward_solves;
+  // 1b. A placed effect joining a fit also starts where, to first order, it removes most of
+  //     what that fit leaves (place_scan.h), warm at the fit's coarse state.
+  std::vector<std::vector<Eigen::VectorXd>> scanned(scans.size());
+  std::vector<int> scan_solves(scans.size(), 0);
+  ParallelFor(static_cast<int>(scans.size()), options.threads, [&](int i) {
+    const ScanTask& t = scans[static_cast<size_t>(i)];
+    const EffectModel& m = out.models[static_cast<size_t>(t.pair)];
+    const int single = m.parts[static_cast<size_t>(t.fitted)];
+    const FitPoint& point = points.at({single, branch_of(m)});
+    scanned[static_cast<size_t>(i)] =
+        ScanPlaces(ctx, m, singles, t.fitted, single_fits[static_cast<size_t>(single)].x, point,
+                   kScannedPlaces, t.exclusions, &scan_solves[static_cast<size_t>(i)]);
+  });
+  for (size_t i = 0; i < scans.size(); ++i) {
+    out.forward_solves += scan_solves[i];
+    EffectModel& m = out.models[static_cast<size_t>(scans[i].pair)];
+    for (Eigen::VectorXd& x : scanned[i]) {
+      m.starts.push_back(std::move(x));
+      fitted_parts[static_cast<size_t>(scans[i].pair)].push_back(kWarmStart + scans[i].fitted);
+    }
+  }
   // 2. Every pair screened on the coarse level: a few iterations from its starts, the pairs in
   //    parallel; a start beside a single fit begins where that fit's state is.
   out.fits.resize(static_cast<size_t>(n));
@@ -241,11 +311,13 @@ PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulat
     FitOptions screen{options.screen_iterations, 1, /*polish=*/false, /*patient_start=*/false,
                       options.start_iterations};
     screen.known_start = [&](int s, RodSimulator* sim) -> std::optional<LmStart> {
-      const int part = fitted[static_cast<size_t>(s)];
-      if (part < 0) return std::nullopt;
+      const int kind = fitted[static_cast<size_t>(s)];
+      if (kind < 0) return std::nullopt;
+      const int part = kind >= kWarmStart ? kind - kWarmStart : kind;
       const FitPoint& point = points.at({m.parts[static_cast<size_t>(part)], branch_of(m)});
       if (!point.ok) return std::nullopt;
       *sim = point.sim;
+      if (kind >= kWarmStart) return std::nullopt;  // only solved from there
       return KnownPairStart(m, singles, part, point);
     };
     Fit& f = out.fits[static_cast<size_t>(k)];

@@ -1,8 +1,10 @@
 // Which pair of effects explains a recording that no single effect does. Every pair the
 // catalogue allows is screened by a few Levenberg-Marquardt iterations of the joint fit, started
 // from the two single fits (each has absorbed some of the other cause, but they lie in the right
-// basin) and from one single fit with the other effect at its neutral start (what a forward
-// selection step would start from); the most promising pairs are then fitted to their optimum.
+// basin), from one single fit with the other effect at its neutral start (what a forward
+// selection step would start from) and, for a contact, from the places where it removes most of
+// the other single fit's residual to first order, that fit refitted alongside (place_scan.h);
+// the most promising pairs are then fitted to their optimum.
 // A forward selection from the best single fit alone misses a pair whose causes that fit has
 // mixed up, and its fits over every start of the added effect cost more than screening all pairs.
 // The selection (model_selection) then weighs the pairs against the single effects: a pair must
@@ -25,6 +27,8 @@ struct PairSearchOptions {
   int refits = 8;             // how many of the best screened pairs are carried to the optimum
   int deep_refits = 3;        // how many of the best pairs DeepenPairSearch fits again
   int backward_checks = 2;    // how many of the best pairs CheckPartsAlone takes apart
+  /// How many of the best pairs with a placed part RelocatePlacedParts checks.
+  int relocated_pairs = 4;
   /// SharePartsOfTheBest refits a pair sharing a part with the best one when its cost is within
   /// this factor of the best's.
   double shared_part_range = 100.0;

@@ -29,6 +29,7 @@
 #include "effect_pair_search.h"
 #include "found_effects.h"
 #include "model_selection.h"
+#include "placed_part_relocation.h"
 #include "shape_effects.h"
 #include "shape_final_solve.h"
 #include "shape_nominal.h"
@@ -292,6 +293,9 @@ ShapeDiagnosis DiagnoseShape(const RodSpec& nominal, const ShapeObservation& rec
     if (LeavesMoreThanNoise({{&models, &fits}, {&pairs.models, &pairs.fits}}, n, noise_sigma,
                             options.noise_allowance, &pair_residual))
       DeepenPairSearch(ctx, branches.bases, branches.coarse, &pairs, po);
+    // A contact moved to where its share of the residual says it belongs is shared with the
+    // best pair's rivals too.
+    RelocatePlacedParts(ctx, branches.bases, branches.coarse, models, &pairs, po);
     SharePartsOfTheBest(ctx, branches.bases, models, &pairs, po);
     CheckPartsAlone(ctx, branches.bases, models, &pairs, &fits, po);
     out.cost.forward_solves += pairs.forward_solves;

@@ -52,6 +52,10 @@ struct EffectModel {
   /// strength (residual_bends.h): where the effect belongs follows from what the other fit
   /// leaves, not from a grid laid out for some layouts. Null for effects without a place.
   std::function<std::vector<Eigen::VectorXd>(const std::vector<ResidualBend>&)> starts_at_bends;
+  /// A placed effect's places at zero strength, spread finely over the cable in order of their
+  /// first parameter (the place along it), for the first-order scan of where the effect removes
+  /// most of another fit's residual (place_scan.h). Empty for effects without a place.
+  std::vector<Eigen::VectorXd> scan_places;
   /// The parameters that set the effect's strength: where all of them are zero the model is
   /// the spec it changes, and the other parameters (where, how wide) do nothing. Empty when no
   /// parameter value is neutral.

@@ -232,5 +232,24 @@ TEST(ShapeEffectsTest, PlacedEffectsStartAtResidualBends) {
   EXPECT_FALSE(ModelOf(models, ShapeEffect::kClampCompliance).starts_at_bends);
 }
 
+// A contact's scan places: at zero force, in order along the cable, off the clamps' own ends and
+// finer than its grid of starts; an effect without a place has none.
+TEST(ShapeEffectsTest, ContactScansPlacesAlongTheCable) {
+  const RodSpec nominal = TwoClamps();
+  const double L = nominal.length;
+  const std::vector<EffectModel> models = Models(nominal, {0.01, 0.01});
+  const EffectModel& m = ModelOf(models, ShapeEffect::kSupportContact);
+  ASSERT_GT(m.scan_places.size(), 2 * m.starts.size());
+  for (size_t i = 0; i < m.scan_places.size(); ++i) {
+    EXPECT_TRUE(m.is_neutral(m.scan_places[i]));
+    EXPECT_GE(m.scan_places[i][0], 0.02 * L);
+    EXPECT_LE(m.scan_places[i][0], 0.98 * L);
+    if (i > 0) {
+      EXPECT_GT(m.scan_places[i][0], m.scan_places[i - 1][0]);
+    }
+  }
+  EXPECT_TRUE(ModelOf(models, ShapeEffect::kClampCompliance).scan_places.empty());
+}
+
 }  // namespace
 }  // namespace cablefit
