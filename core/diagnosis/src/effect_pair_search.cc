@@ -206,6 +206,16 @@ std::vector<ScanTask> ScanTasks(const std::vector<EffectModel>& pairs,
 
 }  // namespace
 
+void PairSearch::KeepIfBetter(std::size_t k, Fit refit) {
+  Fit& old = fits[k];
+  forward_solves += refit.forward_solves;
+  lm_iterations += refit.lm_iterations;
+  if (!refit.ok || !(refit.cost < old.cost)) return;
+  refit.forward_solves += old.forward_solves;
+  refit.lm_iterations += old.lm_iterations;
+  old = std::move(refit);
+}
+
 PairSearch SearchEffectPairs(const FitContext& ctx, const std::vector<RodSimulator>& bases,
                              const std::vector<RodSimulator>& coarse,
                              const RodSpec& nominal, const std::vector<EffectModel>& singles,
@@ -500,16 +510,7 @@ void SharePartsOfTheBest(const FitContext& ctx, const std::vector<RodSimulator>&
       }
       r.fit.branch = old.branch;
     });
-    for (Reseed& r : reseeds) {
-      Fit& old = search->fits[r.pair];
-      search->forward_solves += r.fit.forward_solves;
-      search->lm_iterations += r.fit.lm_iterations;
-      if (r.fit.ok && r.fit.cost < old.cost) {
-        r.fit.forward_solves += old.forward_solves;
-        r.fit.lm_iterations += old.lm_iterations;
-        old = std::move(r.fit);
-      }
-    }
+    for (Reseed& r : reseeds) search->KeepIfBetter(static_cast<std::size_t>(r.pair), std::move(r.fit));
     if (BestFit(search->fits) == best) return;
   }
 }

@@ -40,6 +40,10 @@ struct PairSearch {
   std::vector<Fit> fits;            // one per model
   int forward_solves = 0;
   int lm_iterations = 0;
+
+  /// A refit of model `k`: its cost counted, and kept when better than the fit there (which
+  /// then carries the cost of both).
+  void KeepIfBetter(std::size_t k, Fit refit);
 };
 
 /// The pairs worth weighing, each fitted jointly to its optimum. `singles` and `single_fits` are

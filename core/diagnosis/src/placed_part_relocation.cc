@@ -92,16 +92,7 @@ void RelocatePlacedParts(const FitContext& ctx, const std::vector<RodSimulator>&
     r.fit.branch = branch;
   });
   // In a fixed order, so that the result does not depend on the threads.
-  for (Refit& r : refits) {
-    Fit& old = search->fits[r.pair];
-    search->forward_solves += r.fit.forward_solves;
-    search->lm_iterations += r.fit.lm_iterations;
-    if (r.fit.ok && r.fit.cost < old.cost) {
-      r.fit.forward_solves += old.forward_solves;
-      r.fit.lm_iterations += old.lm_iterations;
-      old = std::move(r.fit);
-    }
-  }
+  for (Refit& r : refits) search->KeepIfBetter(static_cast<std::size_t>(r.pair), std::move(r.fit));
 }
 
 }  // namespace cablefit

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cablefit/core/base/errors.h"
+#include "shared_library.h"
 
 #ifndef CABLEFIT_FREETYPE_SONAME
 #define CABLEFIT_FREETYPE_SONAME "libfreetype.so.6"
@@ -20,19 +21,14 @@ struct Loaded {
 
 Loaded Load() {
   Loaded out;
-  void* handle = nullptr;
-  for (const char* name : {CABLEFIT_FREETYPE_SONAME, "libfreetype.so.6", "libfreetype.so"}) {
-    handle = dlopen(name, RTLD_NOW | RTLD_LOCAL);
-    if (handle) break;
-  }
+  std::string why;
+  void* handle =
+      OpenSharedLibrary({CABLEFIT_FREETYPE_SONAME, "libfreetype.so.6", "libfreetype.so"}, &why);
   if (!handle) {
-    const char* why = dlerror();
     out.error = std::string("text in pictures is not available: ") + CABLEFIT_FREETYPE_SONAME +
-                " could not be loaded (" + (why ? why : "not found") +
-                "; install the libfreetype6 package)";
+                " could not be loaded (" + why + "; install the libfreetype6 package)";
     return out;
   }
-  // Never closed: the fonts stay loaded as long as the process.
   auto find = [&](const char* symbol) -> void* {
     if (void* p = dlsym(handle, symbol)) return p;
     if (out.error.empty())

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cablefit/core/base/errors.h"
+#include "shared_library.h"
 
 #ifndef CABLEFIT_OSMESA_SONAME
 #define CABLEFIT_OSMESA_SONAME "libOSMesa.so.8"
@@ -21,17 +22,13 @@ struct Loaded {
 
 Loaded Load() {
   Loaded out;
-  void* handle = nullptr;
+  std::string why;
   // The library the build found first; its usual names after it (a rebuilt Mesa).
-  for (const char* name : {CABLEFIT_OSMESA_SONAME, "libOSMesa.so.8", "libOSMesa.so"}) {
-    handle = dlopen(name, RTLD_NOW | RTLD_LOCAL);
-    if (handle) break;
-  }
+  void* handle =
+      OpenSharedLibrary({CABLEFIT_OSMESA_SONAME, "libOSMesa.so.8", "libOSMesa.so"}, &why);
   if (!handle) {
-    const char* why = dlerror();
     out.error = std::string("off-screen rendering is not available: ") + CABLEFIT_OSMESA_SONAME +
-                " could not be loaded (" + (why ? why : "not found") +
-                "; install the libosmesa6 package)";
+                " could not be loaded (" + why + "; install the libosmesa6 package)";
     return out;
   }
   // Never closed: GL state and the driver's threads live as long as the process.

@@ -53,6 +53,17 @@ Eigen::Matrix3d RotZ(double a) {
   return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
 }
 
+// The Y junction with each clamp's normal turned by a different angle about its leg: the legs
+// twist and the breakout turns.
+NetworkSpec TwistedYJunction(double length) {
+  NetworkSpec spec = YJunction(length);
+  for (int k = 0; k < 3; ++k) {
+    SupportSpec& clamp = spec.branches[k].supports[0];
+    clamp.normal = Eigen::AngleAxisd(0.4 * (k + 1), clamp.tangent) * clamp.tangent.unitOrthogonal();
+  }
+  return spec;
+}
+
 // A level started from an equilibrium keeps its twist, not only its shape: the Y junction with
 // each clamp's normal turned by a different angle about its leg twists the legs and turns the
 // breakout. Started from that equilibrium's centrelines and element normals, the same level is
@@ -60,11 +71,7 @@ Eigen::Matrix3d RotZ(double a) {
 // needs fewer iterations than from the drawing and lands on the same equilibrium.
 TEST(Network, AWarmStartWithTheElementNormalsKeepsTheEquilibriumTwist) {
   const double length = 0.3;
-  NetworkSpec spec = YJunction(length);
-  for (int k = 0; k < 3; ++k) {
-    SupportSpec& clamp = spec.branches[k].supports[0];
-    clamp.normal = Eigen::AngleAxisd(0.4 * (k + 1), clamp.tangent) * clamp.tangent.unitOrthogonal();
-  }
+  const NetworkSpec spec = TwistedYJunction(length);
   NetworkOptions opt;
   opt.element_length = 0.01;
   const NetworkSolution cold = SolveNetwork(spec, opt);
@@ -96,11 +103,7 @@ TEST(Network, AWarmStartWithTheElementNormalsKeepsTheEquilibriumTwist) {
 
 TEST(Network, AFinerLevelStartsFromTheCoarserEquilibriumItself) {
   const double length = 0.3;
-  NetworkSpec spec = YJunction(length);
-  for (int k = 0; k < 3; ++k) {
-    SupportSpec& clamp = spec.branches[k].supports[0];
-    clamp.normal = Eigen::AngleAxisd(0.4 * (k + 1), clamp.tangent) * clamp.tangent.unitOrthogonal();
-  }
+  const NetworkSpec spec = TwistedYJunction(length);
   NetworkOptions opt;
   opt.element_length = 0.01;
   opt.keep_start = true;
