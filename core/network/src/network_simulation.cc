@@ -452,7 +452,6 @@ NetworkSolution SolveNetwork(const NetworkSpec& spec, const NetworkOptions& opti
   if (!options.start || !TransferNetworkState(options.start->model, options.start->state, base, &st))
     st = DrawnNetworkState(base, warm ? &options.initial_routes : nullptr,
                            warm ? &options.initial_normals : nullptr);
-
   std::vector<Hold> holds = TouchingInDrawing(base, st, field, info, options.contact_gap);
   NetworkModel net = base;
   NetworkSolution sol;

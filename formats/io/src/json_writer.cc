@@ -71,15 +71,19 @@ JsonWriter& JsonWriter::EndArray() {
   return *this;
 }
 
-JsonWriter& JsonWriter::Number(double value) {
-  BeforeValue();
+void JsonWriter::AppendNumber(double value) {
   if (!std::isfinite(value)) {
     out_ += "null";
-    return *this;
+    return;
   }
   char buf[32];
   const auto r = std::to_chars(buf, buf + sizeof(buf), value);
   out_.append(buf, r.ptr);
+}
+
+JsonWriter& JsonWriter::Number(double value) {
+  BeforeValue();
+  AppendNumber(value);
   return *this;
 }
 
@@ -129,15 +133,9 @@ JsonWriter& JsonWriter::String(std::string_view value) {
 JsonWriter& JsonWriter::Numbers(const Eigen::Ref<const Eigen::VectorXd>& values) {
   BeforeValue();
   out_ += '[';
-  char buf[32];
   for (Eigen::Index i = 0; i < values.size(); ++i) {
     if (i > 0) out_ += ", ";
-    if (!std::isfinite(values[i])) {
-      out_ += "null";
-      continue;
-    }
-    const auto r = std::to_chars(buf, buf + sizeof(buf), values[i]);
-    out_.append(buf, r.ptr);
+    AppendNumber(values[i]);
   }
   out_ += ']';
   return *this;

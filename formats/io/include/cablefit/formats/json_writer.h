@@ -45,6 +45,7 @@ class JsonWriter {
   void BeforeValue();
   void NewLine();
   void AppendQuoted(std::string_view text);
+  void AppendNumber(double value);
   void Close(char bracket, bool object);
 
   struct Level {
