@@ -26,27 +26,53 @@ bool TransferNetworkState(const NetworkModel& from, const RodState& from_state,
     return false;
   RodState st;
   st.q.assign(tm.items.size(), Eigen::Vector4d(1, 0, 0, 0));
-  // Elements: the coarser elements' frames at their midpoints, slerped to each finer midpoint
-  // of the same branch (a coarse element's tangent is its chord, so the finer chain passes
-  // through the coarse nodes up to the curvature's second-order term).
+  // Elements: slerped by arc length between the coarser level's frame samples of the same branch
+  // (element midpoints and the support frames at their nodes). A coarse element's tangent is its
+  // chord, so the finer chain passes through the coarse nodes up to the curvature's second-order
+  // term. Beyond the outermost samples (towards a junction) the frames are extrapolated from the
+  // two nearest ones: the branch's end turns as the coarse level has it turning there. Holding
+  // the nearest frame instead puts the turn over half a coarse element into a finer element's
+  // joint: on a 1000-segment harness the start's bending energy was 3.6 times the equilibrium's.
+  struct Sample {
+    double s;
+    Eigen::Quaterniond q;
+  };
+  std::vector<Sample> samples;
   for (size_t b = 0; b < to.branches.size(); ++b) {
     const internal::BranchLayout& fl = from.branches[b];
     const internal::BranchLayout& tl = to.branches[b];
     if (fl.elements.empty() || tl.elements.empty()) return false;
     const double scale = tl.node_s[tl.node_s.size() - 1] /
                          std::max(1e-300, fl.node_s[fl.node_s.size() - 1]);
-    std::vector<double> mids(fl.elements.size());
-    for (size_t k = 0; k < fl.elements.size(); ++k)
-      mids[k] = 0.5 * (fl.node_s[k] + fl.node_s[k + 1]) * scale;
+    samples.clear();
+    for (int e : fl.elements) {
+      const int item = fm.element_item[e];
+      samples.push_back({fm.items[item].s * scale, AsQuaternion(from_state.q[item])});
+    }
+    for (int k : fl.supports) {
+      const int item = fm.supports[k].item;
+      if (item >= 0)
+        samples.push_back({fm.items[item].s * scale, AsQuaternion(from_state.q[item])});
+    }
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const Sample& a, const Sample& b) { return a.s < b.s; });
+    const int n = static_cast<int>(samples.size());
     for (size_t k = 0; k < tl.elements.size(); ++k) {
       const double s = 0.5 * (tl.node_s[k] + tl.node_s[k + 1]);
-      const auto up = std::upper_bound(mids.begin(), mids.end(), s);
-      const int j = std::clamp(static_cast<int>(up - mids.begin()) - 1, 0,
-                               static_cast<int>(mids.size()) - 1);
-      Eigen::Quaterniond q = AsQuaternion(from_state.q[fm.element_item[fl.elements[j]]]);
-      if (j + 1 < static_cast<int>(mids.size()) && s > mids[j]) {
-        const double w = (s - mids[j]) / (mids[j + 1] - mids[j]);
-        q = q.slerp(w, AsQuaternion(from_state.q[fm.element_item[fl.elements[j + 1]]]));
+      const auto up = std::upper_bound(samples.begin(), samples.end(), s,
+                                       [](double v, const Sample& a) { return v < a.s; });
+      Eigen::Quaterniond q = samples[std::clamp(static_cast<int>(up - samples.begin()) - 1, 0,
+                                                n - 1)].q;
+      if (n >= 2) {
+        const int j = std::clamp(static_cast<int>(up - samples.begin()) - 1, 0, n - 2);
+        const double ds = samples[j + 1].s - samples[j].s;
+        if (ds > 0) {
+          // At most half a sample spacing beyond the outermost samples: a bounded extrapolation.
+          const double w = std::clamp((s - samples[j].s) / ds, -0.5, 1.5);
+          Eigen::Quaterniond qb = samples[j + 1].q;
+          if (samples[j].q.dot(qb) < 0) qb.coeffs() = -qb.coeffs();
+          q = samples[j].q.slerp(w, qb);
+        }
       }
       st.q[tm.element_item[tl.elements[k]]] = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
     }

@@ -61,6 +61,14 @@ constexpr double kStepRoundOff = 1e-15;
 // (a hundredth of a micrometre per metre) and a converged gradient is that floor: converged.
 constexpr double kStagnationFloor = 1e-8;
 constexpr int kStagnationIterations = 8;
+// The same floor seen in the steps: a large network (7653 elements) ends its solves with steps of
+// 1e-8..1e-7 rad that trade a gradient of 1e-11..5e-7 N m against constraints of 1e-10 m, for
+// ten iterations and more, before both happen to fall below tolerance. Steps that rotate no frame
+// by more than kRoundOffRotation (positions move by less than a tenth of a micrometre per metre
+// of cable) for kRoundOffSteps iterations without the KKT residual halving, with the constraints
+// below the stagnation floor, are that floor: converged.
+constexpr double kRoundOffRotation = 1e-7;  // [rad]
+constexpr int kRoundOffSteps = 3;
 
 // Continuation in the support poses (and loads): the first step goes a quarter of the way, a
 // step that converged within kEasyStepIterations Newton iterations lets the next one grow by
@@ -444,6 +452,9 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
   bool first = true;
   double best_constraint = std::numeric_limits<double>::infinity();
   int best_constraint_iter = 0;
+  double best_kkt = std::numeric_limits<double>::infinity();
+  int best_kkt_iter = 0;
+  int round_off_steps = 0;  // consecutive steps below kRoundOffRotation
   const bool pseudo_transient = pseudo_time_shift > 0;
   // The rows' basis (constraint_basis.h) depends on the supports' frames only, which stay put
   // during a solve (ApplySupportTargets above).
@@ -485,6 +496,18 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
                     std::to_string(sum.constraint_norm) + " m)";
       break;
     }
+    const double kkt_residual = std::max(sum.gradient_norm / gtol_eff, sum.constraint_norm / ctol);
+    if (kkt_residual < 0.5 * best_kkt) {
+      best_kkt = kkt_residual;
+      best_kkt_iter = iter;
+    }
+    if (round_off_steps >= kRoundOffSteps && iter - best_kkt_iter >= kRoundOffSteps &&
+        sum.constraint_norm <= kStagnationFloor * L) {
+      sum.termination = TerminationType::kConverged;
+      sum.message = "Newton steps at the solver's round-off floor (|grad| " +
+                    std::to_string(sum.gradient_norm) + " N m)";
+      break;
+    }
     if (iter >= options.max_iterations) {
       sum.termination = TerminationType::kNoConvergence;
       sum.message = "iteration limit";
@@ -515,6 +538,7 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
     double max_rot = 0.0;
     for (size_t i = 0; i < model.items.size(); ++i)
       max_rot = std::max(max_rot, kkt.step.segment<3>(3 * i).norm());
+    round_off_steps = max_rot <= kRoundOffRotation ? round_off_steps + 1 : 0;
     Eigen::VectorXd step = kkt.step;
     if (max_rot > options.max_step_rotation) step *= options.max_step_rotation / max_rot;
     const double step_norm = step.lpNorm<Eigen::Infinity>();
