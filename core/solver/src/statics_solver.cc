@@ -519,9 +519,11 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
     KktSolve kkt;
     // Inertia correction. A Hessian that is not finite (loads beyond any physical size) has no
     // shift that helps: the loop would never reach its bound, so it fails at once.
+    double shift = 0.0;  // the one the step was solved with
     for (double mu = pseudo_time_shift * scale; std::isfinite(scale);) {
       CheckCancelled();
       kkt = SolveKkt(&kkt_ldlt, model, ev.hessian, ev, free, mu, basis);
+      shift = mu;
       if (kkt.ok && kkt.negative_directions == 0) break;
       mu = mu == 0.0 ? kFirstHessianShift * scale : kHessianShiftGrowth * mu;
       if (mu > kMaxHessianShift * scale) {
@@ -538,7 +540,10 @@ StaticsSummary SolveStaticsNewton(const RodModel& model, RodState* state,
     double max_rot = 0.0;
     for (size_t i = 0; i < model.items.size(); ++i)
       max_rot = std::max(max_rot, kkt.step.segment<3>(3 * i).norm());
-    round_off_steps = max_rot <= kRoundOffRotation ? round_off_steps + 1 : 0;
+    // Only a Newton step tells how far the solution is: a shifted one (pseudo-time, inertia
+    // correction beyond round-off) is short because of its shift.
+    const bool newton_step = shift <= kFirstHessianShift * scale;
+    round_off_steps = newton_step && max_rot <= kRoundOffRotation ? round_off_steps + 1 : 0;
     Eigen::VectorXd step = kkt.step;
     if (max_rot > options.max_step_rotation) step *= options.max_step_rotation / max_rot;
     const double step_norm = step.lpNorm<Eigen::Infinity>();
