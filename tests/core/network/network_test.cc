@@ -101,6 +101,15 @@ TEST(Network, AWarmStartWithTheElementNormalsKeepsTheEquilibriumTwist) {
               1e-9 * length);
 }
 
+// Options for a level `refinement` times finer than `opt`'s, started from `coarse`'s equilibrium.
+NetworkOptions StartedFrom(NetworkOptions opt, const NetworkSolution& coarse, int refinement) {
+  opt.refinement = refinement;
+  opt.initial_routes = coarse.branches;
+  opt.initial_normals = coarse.element_normals;
+  opt.start = coarse.start;
+  return opt;
+}
+
 TEST(Network, AFinerLevelStartsFromTheCoarserEquilibriumItself) {
   const double length = 0.3;
   const NetworkSpec spec = TwistedYJunction(length);
@@ -116,10 +125,8 @@ TEST(Network, AFinerLevelStartsFromTheCoarserEquilibriumItself) {
   EXPECT_EQ(SolveNetwork(spec, same).summary.iterations, 0);
   // Finer elements: at most as many Newton steps as from the start drawn through the coarse
   // nodes, and the same equilibrium.
-  NetworkOptions fine = opt;
-  fine.refinement = 1;
-  fine.initial_routes = coarse.branches;
-  fine.initial_normals = coarse.element_normals;
+  NetworkOptions fine = StartedFrom(opt, coarse, 1);
+  fine.start.reset();
   const NetworkSolution from_routes = SolveNetwork(spec, fine);
   fine.start = coarse.start;
   const NetworkSolution from_state = SolveNetwork(spec, fine);
@@ -138,19 +145,13 @@ TEST(Network, AFinerLevelStartsFromTheCoarserEquilibriumItself) {
 // branch's outermost coarse frame out to its ends put the turn of half a coarse element into one
 // finer joint.
 TEST(Network, AFinerStartBendsUpToTheClampsAndTheBreakout) {
-  const double length = 0.3;
-  const NetworkSpec spec = TwistedYJunction(length);
+  const NetworkSpec spec = TwistedYJunction(0.3);
   NetworkOptions opt;
   opt.element_length = 0.02;
   opt.keep_start = true;
   const NetworkSolution coarse = SolveNetwork(spec, opt);
   ASSERT_TRUE(coarse.converged()) << coarse.summary.BriefReport();
-  NetworkOptions fine = opt;
-  fine.refinement = 2;
-  fine.initial_routes = coarse.branches;
-  fine.initial_normals = coarse.element_normals;
-  fine.start = coarse.start;
-  const NetworkSolution from_state = SolveNetwork(spec, fine);
+  const NetworkSolution from_state = SolveNetwork(spec, StartedFrom(opt, coarse, 2));
   ASSERT_TRUE(from_state.converged()) << from_state.summary.BriefReport();
   const StaticsSummary& s = from_state.summary;
   // Measured: 2.5e-5 of the energy above the equilibrium; holding the ends' frames: 2.8e-3.
