@@ -32,7 +32,7 @@ bool TransferNetworkState(const NetworkModel& from, const RodState& from_state,
   // term. Beyond the outermost samples (towards a junction) the frames are extrapolated from the
   // two nearest ones: the branch's end turns as the coarse level has it turning there. Holding
   // the nearest frame instead puts the turn over half a coarse element into a finer element's
-  // joint: on a 1000-segment harness the start's bending energy was 3.6 times the equilibrium's.
+  // joint (a twisted Y junction's start: 2.8e-3 of the energy above the equilibrium, now 2.5e-5).
   struct Sample {
     double s;
     Eigen::Quaterniond q;
@@ -61,18 +61,16 @@ bool TransferNetworkState(const NetworkModel& from, const RodState& from_state,
       const double s = 0.5 * (tl.node_s[k] + tl.node_s[k + 1]);
       const auto up = std::upper_bound(samples.begin(), samples.end(), s,
                                        [](double v, const Sample& a) { return v < a.s; });
-      Eigen::Quaterniond q = samples[std::clamp(static_cast<int>(up - samples.begin()) - 1, 0,
-                                                n - 1)].q;
-      if (n >= 2) {
-        const int j = std::clamp(static_cast<int>(up - samples.begin()) - 1, 0, n - 2);
-        const double ds = samples[j + 1].s - samples[j].s;
-        if (ds > 0) {
-          // At most half a sample spacing beyond the outermost samples: a bounded extrapolation.
-          const double w = std::clamp((s - samples[j].s) / ds, -0.5, 1.5);
-          Eigen::Quaterniond qb = samples[j + 1].q;
-          if (samples[j].q.dot(qb) < 0) qb.coeffs() = -qb.coeffs();
-          q = samples[j].q.slerp(w, qb);
-        }
+      const int before = static_cast<int>(up - samples.begin()) - 1;
+      Eigen::Quaterniond q = samples[std::clamp(before, 0, n - 1)].q;
+      const int j = std::clamp(before, 0, std::max(0, n - 2));
+      if (j + 1 < n && samples[j + 1].s > samples[j].s) {
+        // At most half a sample spacing beyond the outermost samples: a bounded extrapolation.
+        const double w =
+            std::clamp((s - samples[j].s) / (samples[j + 1].s - samples[j].s), -0.5, 1.5);
+        Eigen::Quaterniond qb = samples[j + 1].q;
+        if (samples[j].q.dot(qb) < 0) qb.coeffs() = -qb.coeffs();
+        q = samples[j].q.slerp(w, qb);
       }
       st.q[tm.element_item[tl.elements[k]]] = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
     }
